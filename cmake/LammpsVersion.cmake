@@ -1,0 +1,41 @@
+# Derive a numeric LAMMPS version (yyyymmdd) from src/version.h, which has no such macro, and
+# detect the API generation from the headers themselves.
+#   ETD_LAMMPS_VERSION             e.g. 20210929
+#   ETD_LAMMPS_VERSION_STRING      e.g. "29 Sep 2021"
+#   ETD_LAMMPS_COMPAT_DEFINITIONS  compile definitions for src/lammps_compat.h
+function(etd_lammps_version source_dir)
+  if(NOT source_dir OR NOT EXISTS "${source_dir}/src/version.h")
+    message(FATAL_ERROR "LAMMPS_SOURCE_DIR must be the top of a LAMMPS source tree "
+                        "(with src/version.h), got '${source_dir}'")
+  endif()
+  file(STRINGS "${source_dir}/src/version.h" line REGEX "define LAMMPS_VERSION ")
+  string(REGEX MATCH "\"([0-9]+) ([A-Za-z]+) ([0-9]+)\"" _ "${line}")
+  if(NOT CMAKE_MATCH_3)
+    message(FATAL_ERROR "cannot parse LAMMPS version from ${source_dir}/src/version.h: ${line}")
+  endif()
+  set(day ${CMAKE_MATCH_1})
+  set(year ${CMAKE_MATCH_3})
+  set(months Jan Feb Mar Apr May Jun Jul Aug Sep Oct Nov Dec)
+  list(FIND months "${CMAKE_MATCH_2}" month_index)
+  if(month_index LESS 0)
+    message(FATAL_ERROR "unknown month '${CMAKE_MATCH_2}' in LAMMPS version.h")
+  endif()
+  math(EXPR number "${year} * 10000 + (${month_index} + 1) * 100 + ${day}")
+  set(ETD_LAMMPS_VERSION ${number} PARENT_SCOPE)
+  set(ETD_LAMMPS_VERSION_STRING "${CMAKE_MATCH_1} ${CMAKE_MATCH_2} ${CMAKE_MATCH_3}" PARENT_SCOPE)
+
+  set(defs ETD_LAMMPS_VERSION=${number})
+  file(READ "${source_dir}/src/neighbor.h" neighbor_h)
+  if(neighbor_h MATCHES "add_request")
+    list(APPEND defs ETD_LAMMPS_HAS_ADD_REQUEST=1)
+  else()
+    list(APPEND defs ETD_LAMMPS_HAS_ADD_REQUEST=0)
+  endif()
+  file(READ "${source_dir}/src/comm.h" comm_h)
+  if(comm_h MATCHES "reverse_comm_pair")
+    list(APPEND defs ETD_LAMMPS_HAS_GENERIC_COMM=0)
+  else()
+    list(APPEND defs ETD_LAMMPS_HAS_GENERIC_COMM=1)
+  endif()
+  set(ETD_LAMMPS_COMPAT_DEFINITIONS ${defs} PARENT_SCOPE)
+endfunction()

@@ -1,0 +1,83 @@
+// ETD-DPD: compute dpd/split. The pair style accumulates the split during its force
+// evaluation; this compute only reads it, so its values belong to the last force evaluation.
+#include "compute_dpd_split.h"
+
+#include "atom.h"
+#include "dpd_style_lookup.h"
+#include "error.h"
+#include "memory.h"
+#include "update.h"
+
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+static constexpr int NVALUES = 9;
+
+ComputeDPDSplit::ComputeDPDSplit(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), provider(nullptr), nmax(0), per_atom(nullptr)
+{
+  if (narg != 3)
+    error->all(FLERR, "Illegal compute dpd/split command: expected 'compute ID group dpd/split', "
+               "got {} extra arguments", narg - 3);
+  vector_flag = 1;
+  size_vector = NVALUES;
+  extvector = 1;
+  peratom_flag = 1;
+  size_peratom_cols = NVALUES;
+  vector = new double[NVALUES];
+  // the pair style fills the split every force evaluation once requested
+  timeflag = 0;
+}
+
+ComputeDPDSplit::~ComputeDPDSplit()
+{
+  delete[] vector;
+  memory->destroy(per_atom);
+}
+
+void ComputeDPDSplit::init()
+{
+  auto providers = etd::find_dpd_providers(lmp);
+  if (providers.empty())
+    error->all(FLERR, "Compute dpd/split requires pair style dpd/gen or dpd/fpm (alone or in hybrid)");
+  if (providers.size() > 1)
+    error->all(FLERR, "Compute dpd/split supports one dpd/gen or dpd/fpm sub-style, found {}",
+               providers.size());
+  provider = providers.front();
+  provider->request_force_split();
+}
+
+void ComputeDPDSplit::copy_split()
+{
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(per_atom);
+    memory->create(per_atom, nmax, NVALUES, "dpd/split:per_atom");
+    array_atom = per_atom;
+  }
+  double **split = provider->force_split();
+  const int nlocal = atom->nlocal;
+  const int *mask = atom->mask;
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < NVALUES; k++)
+      per_atom[i][k] = (split && (mask[i] & groupbit)) ? split[i][k] : 0.0;
+}
+
+void ComputeDPDSplit::compute_peratom()
+{
+  invoked_peratom = update->ntimestep;
+  copy_split();
+}
+
+void ComputeDPDSplit::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  copy_split();
+  double local[NVALUES] = {0.0};
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int k = 0; k < NVALUES; k++) local[k] += per_atom[i][k];
+  MPI_Allreduce(local, vector, NVALUES, MPI_DOUBLE, MPI_SUM, world);
+}
+
+double ComputeDPDSplit::memory_usage() { return static_cast<double>(nmax) * NVALUES * sizeof(double); }

@@ -1,0 +1,29 @@
+// ETD-DPD: compute dpd/split, the conservative / dissipative / random parts of the pair force.
+#ifndef ETD_COMPUTE_DPD_SPLIT_H
+#define ETD_COMPUTE_DPD_SPLIT_H
+
+#include "compute.h"
+
+namespace etd { class DpdExtrasProvider; }
+
+namespace LAMMPS_NS {
+
+class ComputeDPDSplit : public Compute {
+ public:
+  ComputeDPDSplit(class LAMMPS *, int, char **);
+  ~ComputeDPDSplit() override;
+  void init() override;
+  void compute_vector() override;
+  void compute_peratom() override;
+  double memory_usage() override;
+
+ private:
+  etd::DpdExtrasProvider *provider;
+  int nmax;
+  double **per_atom;
+  void copy_split();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

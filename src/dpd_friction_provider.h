@@ -1,0 +1,25 @@
+// ETD-DPD: what the package's pair styles offer to its integrator and computes.
+#ifndef ETD_DPD_FRICTION_PROVIDER_H
+#define ETD_DPD_FRICTION_PROVIDER_H
+
+namespace etd {
+
+// Per-atom extras a pair style accumulates during compute() on request (owned atoms complete,
+// ghost contributions already reverse-communicated):
+//   diagonal friction Gamma_i,alpha = sum_j gamma_ij w_D e_alpha^2      (fix etd)
+//   conservative, dissipative and random parts of the pair force       (compute dpd/split)
+class DpdExtrasProvider {
+ public:
+  virtual ~DpdExtrasProvider() = default;
+  // Each user sets its flag once in init(); the pair style then fills the arrays every compute().
+  virtual void request_diagonal_friction() = 0;
+  virtual void request_force_split() = 0;
+  virtual double **diagonal_friction() = 0;    // [nlocal][3]
+  virtual double **force_split() = 0;          // [nlocal][9]: C xyz, D xyz, R xyz
+  // Angular counterparts (dpd/fpm): nullptr where the style has no rotation.
+  virtual double **rotational_friction() { return nullptr; }
+};
+
+}    // namespace etd
+
+#endif

@@ -1,0 +1,135 @@
+// ETD-DPD: the generalised DPD pair kernel as pure functions.
+//
+//   F_ij = a w_C(r) e - gamma w_D(r) (e . v_ij) e + sigma w_R(r) theta_ij e / sqrt(dt)
+//   w_C = (1 - r/rc_C)^p,  w_D = (1 - r/rc_D)^s,  w_R = sqrt(w_D),  sigma^2 = 2 gamma kBT
+//
+// The LAMMPS pair styles only gather atoms and scatter forces; every formula lives here so the
+// unit tests can check it directly.
+#ifndef ETD_DPD_KERNEL_H
+#define ETD_DPD_KERNEL_H
+
+#include <cmath>
+
+namespace etd {
+
+// Exponents that occur in practice get exact, pow()-free evaluations; the kind is chosen once
+// per type pair so the inner loop only switches on a predictable value.
+enum class PowerKind { Zero, Quarter, Half, One, ThreeHalves, Two, General };
+
+inline PowerKind classify_power(double exponent)
+{
+  if (exponent == 0.0) return PowerKind::Zero;
+  if (exponent == 0.25) return PowerKind::Quarter;
+  if (exponent == 0.5) return PowerKind::Half;
+  if (exponent == 1.0) return PowerKind::One;
+  if (exponent == 1.5) return PowerKind::ThreeHalves;
+  if (exponent == 2.0) return PowerKind::Two;
+  return PowerKind::General;
+}
+
+// q^exponent for 0 <= q <= 1.
+inline double power_of(double q, PowerKind kind, double exponent)
+{
+  switch (kind) {
+    case PowerKind::Zero: return 1.0;
+    case PowerKind::Quarter: return std::sqrt(std::sqrt(q));
+    case PowerKind::Half: return std::sqrt(q);
+    case PowerKind::One: return q;
+    case PowerKind::ThreeHalves: return q * std::sqrt(q);
+    case PowerKind::Two: return q * q;
+    default: return std::pow(q, exponent);
+  }
+}
+
+// Weight (1 - r/rc)^exponent inside the cutoff, zero outside.
+inline double cutoff_weight(double r, double rc, double exponent)
+{
+  if (r >= rc) return 0.0;
+  return std::pow(1.0 - r / rc, exponent);
+}
+
+inline double conservative_weight(double r, double rc_c, double p) { return cutoff_weight(r, rc_c, p); }
+inline double dissipative_weight(double r, double rc_d, double s) { return cutoff_weight(r, rc_d, s); }
+inline double random_weight(double r, double rc_d, double s) { return cutoff_weight(r, rc_d, 0.5 * s); }
+
+// Energy whose negative derivative is a (1 - r/rc)^p: a rc/(p+1) (1 - r/rc)^(p+1), zero at rc.
+inline double conservative_energy(double r, double a, double rc_c, double p)
+{
+  if (r >= rc_c) return 0.0;
+  return a * rc_c / (p + 1.0) * std::pow(1.0 - r / rc_c, p + 1.0);
+}
+
+// Noise amplitude from the fluctuation-dissipation theorem.
+inline double noise_amplitude(double gamma, double kT) { return std::sqrt(2.0 * gamma * kT); }
+
+// Per type pair constants, precomputed by the pair style.
+struct PairCoefficients {
+  double a = 0.0;           // conservative amplitude
+  double gamma = 0.0;       // friction
+  double sigma = 0.0;       // noise amplitude sqrt(2 gamma kT)
+  double s = 2.0;           // dissipative exponent
+  double p = 1.0;           // conservative exponent
+  double rc_c = 1.0;        // conservative cutoff
+  double rc_d = 1.0;        // dissipative / random cutoff
+  double inv_rc_c = 1.0;
+  double inv_rc_d = 1.0;
+  double rcsq_c = 1.0;
+  double rcsq_d = 1.0;
+  PowerKind conservative_kind = PowerKind::One;    // w_C = q^p
+  PowerKind dissipative_kind = PowerKind::Two;     // w_D = q^s
+  PowerKind random_kind = PowerKind::One;          // w_R = q^(s/2)
+  PowerKind energy_kind = PowerKind::Two;          // q^(p+1)
+
+  void set(double a_, double gamma_, double s_, double p_, double rc_c_, double rc_d_, double kT)
+  {
+    a = a_; gamma = gamma_; s = s_; p = p_; rc_c = rc_c_; rc_d = rc_d_;
+    sigma = noise_amplitude(gamma, kT);
+    inv_rc_c = 1.0 / rc_c; inv_rc_d = 1.0 / rc_d;
+    rcsq_c = rc_c * rc_c; rcsq_d = rc_d * rc_d;
+    conservative_kind = classify_power(p);
+    dissipative_kind = classify_power(s);
+    random_kind = classify_power(0.5 * s);
+    energy_kind = classify_power(p + 1.0);
+  }
+};
+
+// Scalar pair force magnitudes along e (positive = repulsive), split into their parts.
+struct PairForce {
+  double conservative = 0.0;
+  double dissipative = 0.0;
+  double random = 0.0;
+  double friction = 0.0;   // gamma w_D: the pair's contribution to the friction operator
+  double total() const { return conservative + dissipative + random; }
+};
+
+// r: distance, e_dot_v: (e . v_ij), theta: unit Gaussian, inv_sqrt_dt: 1/sqrt(dt),
+// special: special-bond factor (conservative and dissipative scale by it, random by its root).
+inline PairForce pair_force(const PairCoefficients &c, double rsq, double r, double e_dot_v,
+                            double theta, double inv_sqrt_dt, double special = 1.0)
+{
+  PairForce out;
+  if (rsq < c.rcsq_c) {
+    const double q = 1.0 - r * c.inv_rc_c;
+    out.conservative = special * c.a * power_of(q, c.conservative_kind, c.p);
+  }
+  if (rsq < c.rcsq_d) {
+    const double q = 1.0 - r * c.inv_rc_d;
+    const double w_r = power_of(q, c.random_kind, 0.5 * c.s);
+    const double w_d = (c.dissipative_kind == PowerKind::Two) ? q * q : w_r * w_r;
+    out.friction = special * c.gamma * w_d;
+    out.dissipative = -out.friction * e_dot_v;
+    out.random = std::sqrt(special) * c.sigma * w_r * theta * inv_sqrt_dt;
+  }
+  return out;
+}
+
+inline double pair_energy(const PairCoefficients &c, double rsq, double r, double special = 1.0)
+{
+  if (rsq >= c.rcsq_c) return 0.0;
+  const double q = 1.0 - r * c.inv_rc_c;
+  return special * c.a * c.rc_c / (c.p + 1.0) * power_of(q, c.energy_kind, c.p + 1.0);
+}
+
+}    // namespace etd
+
+#endif

@@ -1,0 +1,68 @@
+// ETD-DPD: coefficients of the exponential-time-differencing update (seed 000 eqs 3-7, 28-31).
+//
+// For one velocity component with diagonal friction rate c = Gamma/m and z = -c dt:
+//   first order:  v' = e^z v + dt phi1(z) A_n
+//   second order: v' = e^z v + dt [(phi1 + phi2) A_n - phi2 A_(n-1)]
+// with phi1(z) = (e^z - 1)/z and phi2(z) = (e^z - 1 - z)/z^2, both evaluated without
+// cancellation near z = 0.
+#ifndef ETD_COEFFICIENTS_H
+#define ETD_COEFFICIENTS_H
+
+#include <cmath>
+
+namespace etd {
+
+// phi1(z) = (e^z - 1)/z; expm1 keeps full relative accuracy for every z.
+inline double phi1(double z)
+{
+  if (z == 0.0) return 1.0;
+  return std::expm1(z) / z;
+}
+
+// phi2(z) = (e^z - 1 - z)/z^2 = sum_k z^k/(k+2)!. The series is used for |z| < 1, where the
+// closed form loses digits; beyond that the cancellation costs less than one bit.
+inline double phi2(double z)
+{
+  if (std::fabs(z) < 1.0) {
+    double term = 0.5;    // z^0/2!
+    double sum = 0.5;
+    for (int k = 1; k < 30; ++k) {
+      term *= z / (k + 2);
+      sum += term;
+      if (std::fabs(term) < 1e-18 * std::fabs(sum)) break;
+    }
+    return sum;
+  }
+  return (std::expm1(z) - z) / (z * z);
+}
+
+// Standard deviation factor of an Ornstein-Uhlenbeck velocity over one step relative to a
+// force held constant over the step: sqrt((1 - e^(2z)) / (-2z)) = sqrt(phi1(2z)).
+inline double ou_noise_factor(double z) { return std::sqrt(phi1(2.0 * z)); }
+
+// Coefficients for one component: v' = decay v + first A_n + second A_(n-1).
+struct EtdCoefficients {
+  double decay;       // e^z
+  double current;     // weight of A_n (includes dt)
+  double previous;    // weight of A_(n-1) (includes dt); zero for first order
+};
+
+inline EtdCoefficients etd_coefficients(double friction_rate, double dt, int order)
+{
+  const double z = -friction_rate * dt;
+  EtdCoefficients c;
+  c.decay = std::exp(z);
+  if (order == 2) {
+    const double p2 = phi2(z);
+    c.current = dt * (phi1(z) + p2);
+    c.previous = -dt * p2;
+  } else {
+    c.current = dt * phi1(z);
+    c.previous = 0.0;
+  }
+  return c;
+}
+
+}    // namespace etd
+
+#endif

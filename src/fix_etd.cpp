@@ -1,0 +1,207 @@
+// ETD-DPD: fix etd. Positions: x += v dt. Velocities, per component, after the forces of the
+// new positions (and old velocities) are known:
+//   v' = e^z v + dt [phi1 A_n]                                  (order 1, seed 000 eq 31)
+//   v' = e^z v + dt [(phi1 + phi2) A_n - phi2 A_(n-1)]          (order 2, seed 000 eq 7)
+// with z = -Gamma dt / m and A = (F + Gamma v)/m, Gamma the diagonal friction from the pair style.
+#include "fix_etd.h"
+
+#include "atom.h"
+#include "dpd_style_lookup.h"
+#include "error.h"
+#include "etd_coefficients.h"
+#include "force.h"
+#include "memory.h"
+#include "update.h"
+#include "utils.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+constexpr int STATE = 4;    // A_(n-1) x, y, z and a validity flag
+}
+
+FixETD::FixETD(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), order(1), noise(Noise::Piecewise), conserve_momentum(false), dt(0.0),
+    previous_forcing(nullptr)
+{
+  time_integrate = 1;
+  restart_peratom = 1;
+  vector_flag = 1;
+  size_vector = 3;
+  extvector = 0;
+  global_freq = 1;
+  momentum_correction[0] = momentum_correction[1] = momentum_correction[2] = 0.0;
+
+  int iarg = 3;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (iarg + 2 > narg) error->all(FLERR, "Illegal fix etd command: keyword {} needs a value", key);
+    const std::string value = arg[iarg + 1];
+    if (key == "order") {
+      if (value == "1") order = 1;
+      else if (value == "2") order = 2;
+      else error->all(FLERR, "Illegal fix etd command: order must be 1 or 2, got {}", value);
+    } else if (key == "noise") {
+      if (value == "piecewise") noise = Noise::Piecewise;
+      else if (value == "exact") noise = Noise::Exact;
+      else error->all(FLERR, "Illegal fix etd command: noise must be piecewise or exact, got {}", value);
+    } else if (key == "momentum") {
+      if (value == "conserve") conserve_momentum = true;
+      else if (value == "none") conserve_momentum = false;
+      else error->all(FLERR, "Illegal fix etd command: momentum must be none or conserve, got {}", value);
+    } else {
+      error->all(FLERR, "Illegal fix etd command: unknown keyword {}", key);
+    }
+    iarg += 2;
+  }
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int k = 0; k < STATE; k++) previous_forcing[i][k] = 0.0;
+}
+
+FixETD::~FixETD()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(previous_forcing);
+}
+
+int FixETD::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
+
+void FixETD::init()
+{
+  dt = update->dt;
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "Fix etd does not support run_style respa");
+  providers = etd::find_dpd_providers(lmp);
+  if (providers.empty())
+    error->all(FLERR, "Fix etd requires pair style dpd/gen or dpd/fpm (alone or in pair "
+               "hybrid/overlay) to supply the diagonal friction");
+  for (auto *p : providers) {
+    p->request_diagonal_friction();
+    if (noise == Noise::Exact) p->request_force_split();
+  }
+}
+
+void FixETD::reset_dt() { dt = update->dt; }
+
+void FixETD::initial_integrate(int)
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) {
+      x[i][0] += dt * v[i][0];
+      x[i][1] += dt * v[i][1];
+      x[i][2] += dt * v[i][2];
+    }
+}
+
+void FixETD::final_integrate()
+{
+  double **v = atom->v;
+  double **f = atom->f;
+  const int *mask = atom->mask;
+  const int *type = atom->type;
+  const double *rmass = atom->rmass;
+  const double *mass = atom->mass;
+  const int nlocal = atom->nlocal;
+
+  double local_sums[7] = {0.0};    // actual momentum change, expected (dt F), group mass
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double m = rmass ? rmass[i] : mass[type[i]];
+    const bool use_previous = (order == 2) && previous_forcing[i][3] != 0.0;
+    for (int k = 0; k < 3; k++) {
+      double friction = 0.0, random_force = 0.0;
+      for (auto *p : providers) {
+        friction += p->diagonal_friction()[i][k];
+        if (noise == Noise::Exact) random_force += p->force_split()[i][6 + k];
+      }
+      const double rate = friction / m;
+      const etd::EtdCoefficients c = etd::etd_coefficients(rate, dt, use_previous ? 2 : order);
+      const double forcing = (f[i][k] + friction * v[i][k]) / m;
+      double deterministic = forcing;
+      double v_new;
+      if (noise == Noise::Exact) {
+        const double random_part = random_force / m;
+        deterministic = forcing - random_part;
+        v_new = c.decay * v[i][k] + c.current * deterministic +
+            dt * etd::ou_noise_factor(-rate * dt) * random_part;
+      } else {
+        v_new = c.decay * v[i][k] + c.current * forcing;
+      }
+      if (use_previous) v_new += c.previous * previous_forcing[i][k];
+      previous_forcing[i][k] = deterministic;
+      local_sums[k] += m * (v_new - v[i][k]);
+      local_sums[3 + k] += dt * f[i][k];
+      v[i][k] = v_new;
+    }
+    previous_forcing[i][3] = 1.0;
+    local_sums[6] += m;
+  }
+
+  if (!conserve_momentum) return;
+  // remove the momentum the per-atom implicit friction creates: the group's momentum then
+  // changes by dt * (sum of forces on it), as in an explicit update
+  double sums[7];
+  MPI_Allreduce(local_sums, sums, 7, MPI_DOUBLE, MPI_SUM, world);
+  if (sums[6] <= 0.0) return;
+  for (int k = 0; k < 3; k++) momentum_correction[k] = (sums[k] - sums[3 + k]) / sums[6];
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit)
+      for (int k = 0; k < 3; k++) v[i][k] -= momentum_correction[k];
+}
+
+double FixETD::compute_vector(int n) { return momentum_correction[n]; }
+
+/* ---- per-atom state: A_(n-1) migrates with atoms and is written to restart files ---- */
+
+void FixETD::grow_arrays(int nmax) { memory->grow(previous_forcing, nmax, STATE, "etd:previous_forcing"); }
+
+void FixETD::copy_arrays(int i, int j, int)
+{
+  for (int k = 0; k < STATE; k++) previous_forcing[j][k] = previous_forcing[i][k];
+}
+
+int FixETD::pack_exchange(int i, double *buf)
+{
+  for (int k = 0; k < STATE; k++) buf[k] = previous_forcing[i][k];
+  return STATE;
+}
+
+int FixETD::unpack_exchange(int nlocal, double *buf)
+{
+  for (int k = 0; k < STATE; k++) previous_forcing[nlocal][k] = buf[k];
+  return STATE;
+}
+
+int FixETD::pack_restart(int i, double *buf)
+{
+  buf[0] = STATE + 1;
+  for (int k = 0; k < STATE; k++) buf[k + 1] = previous_forcing[i][k];
+  return STATE + 1;
+}
+
+void FixETD::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k < STATE; k++) previous_forcing[nlocal][k] = extra[nlocal][m++];
+}
+
+int FixETD::size_restart(int) { return STATE + 1; }
+int FixETD::maxsize_restart() { return STATE + 1; }
+
+double FixETD::memory_usage() { return static_cast<double>(atom->nmax) * STATE * sizeof(double); }

@@ -1,0 +1,48 @@
+// ETD-DPD: fix etd, exponential time differencing for low-mass DPD (see doc/fix_etd.rst).
+#ifndef ETD_FIX_ETD_H
+#define ETD_FIX_ETD_H
+
+#include "fix.h"
+
+#include <vector>
+
+namespace etd { class DpdExtrasProvider; }
+
+namespace LAMMPS_NS {
+
+class FixETD : public Fix {
+ public:
+  FixETD(class LAMMPS *, int, char **);
+  ~FixETD() override;
+  int setmask() override;
+  void init() override;
+  void initial_integrate(int) override;
+  void final_integrate() override;
+  void reset_dt() override;
+  double compute_vector(int) override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  double memory_usage() override;
+
+  enum class Noise { Piecewise, Exact };
+
+ private:
+  int order;
+  Noise noise;
+  bool conserve_momentum;
+  double dt;
+  std::vector<etd::DpdExtrasProvider *> providers;
+  double **previous_forcing;    // [nmax][4]: A_(n-1) per component, and 1 where it is valid
+  double momentum_correction[3];    // last correction applied (output)
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

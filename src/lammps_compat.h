@@ -1,0 +1,79 @@
+// ETD-DPD: the one place that hides differences between LAMMPS versions.
+//
+// ETD_LAMMPS_VERSION (yyyymmdd) is derived by CMake from the tree's version.h. The 2022 API
+// changes (neighbor->add_request, comm->forward_comm(this)/reverse_comm(this)) are selected by
+// it; CMake also detects them in the headers and passes ETD_LAMMPS_HAS_* explicitly, so a
+// development snapshot between releases builds too.
+#ifndef ETD_LAMMPS_COMPAT_H
+#define ETD_LAMMPS_COMPAT_H
+
+#include "comm.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+
+#ifndef ETD_LAMMPS_VERSION
+#error "ETD_LAMMPS_VERSION must be defined by the build system (derived from version.h)"
+#endif
+#ifndef ETD_LAMMPS_HAS_ADD_REQUEST
+#define ETD_LAMMPS_HAS_ADD_REQUEST (ETD_LAMMPS_VERSION >= 20220504)
+#endif
+#ifndef ETD_LAMMPS_HAS_GENERIC_COMM
+#define ETD_LAMMPS_HAS_GENERIC_COMM (ETD_LAMMPS_VERSION >= 20220623)
+#endif
+
+namespace etd {
+namespace compat {
+
+// A half neighbor list with the default newton setting, as a plain pair style uses.
+template <typename Requestor>
+inline void request_half_list(LAMMPS_NS::Neighbor *neighbor, Requestor *requestor, int instance)
+{
+#if ETD_LAMMPS_HAS_ADD_REQUEST
+  (void) instance;
+  neighbor->add_request(requestor);
+#else
+  neighbor->request(requestor, instance);
+#endif
+}
+
+// Reverse communication of a pair style's per-atom data (pack/unpack_reverse_comm).
+inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
+{
+#if ETD_LAMMPS_HAS_GENERIC_COMM
+  comm->reverse_comm(pair);
+#else
+  comm->reverse_comm_pair(pair);
+#endif
+}
+
+inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
+{
+#if ETD_LAMMPS_HAS_GENERIC_COMM
+  comm->forward_comm(pair);
+#else
+  comm->forward_comm_pair(pair);
+#endif
+}
+
+inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
+{
+#if ETD_LAMMPS_HAS_GENERIC_COMM
+  comm->forward_comm(fix);
+#else
+  comm->forward_comm_fix(fix);
+#endif
+}
+
+inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
+{
+#if ETD_LAMMPS_HAS_GENERIC_COMM
+  comm->reverse_comm(fix);
+#else
+  comm->reverse_comm_fix(fix);
+#endif
+}
+
+}    // namespace compat
+}    // namespace etd
+
+#endif

@@ -1,0 +1,486 @@
+// ETD-DPD: pair_style dpd/gen. Thin LAMMPS adapter over dpd_kernel.h and dpd_random.h.
+#include "pair_dpd_gen.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "lammps_compat.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "update.h"
+#include "utils.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+namespace {
+constexpr double EPSILON = 1.0e-10;    // coincident atoms (possible in DPD) get no force
+constexpr int FRICTION_VALUES = 3;
+constexpr int SPLIT_VALUES = 9;
+
+bool is_keyword(const char *word)
+{
+  return std::strcmp(word, "cut_d") == 0 || std::strcmp(word, "exp_c") == 0;
+}
+}    // namespace
+
+PairDPDGen::PairDPDGen(LAMMPS *lmp) :
+    Pair(lmp), temperature(0.0), cut_global(0.0), seed(0), a0(nullptr), gamma(nullptr),
+    exponent_d(nullptr), exponent_c(nullptr), cut(nullptr), cut_d(nullptr), cut_d_set(nullptr),
+    stride(0), want_friction(false), want_split(false), friction(nullptr), split(nullptr),
+    nmax_extras(0)
+{
+  writedata = 1;
+  restartinfo = 1;
+  comm_reverse = FRICTION_VALUES + SPLIT_VALUES;
+}
+
+PairDPDGen::~PairDPDGen()
+{
+  if (copymode) return;
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    memory->destroy(a0);
+    memory->destroy(gamma);
+    memory->destroy(exponent_d);
+    memory->destroy(exponent_c);
+    memory->destroy(cut);
+    memory->destroy(cut_d);
+    memory->destroy(cut_d_set);
+  }
+  memory->destroy(friction);
+  memory->destroy(split);
+}
+
+void PairDPDGen::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  memory->create(a0, n + 1, n + 1, "pair:a0");
+  memory->create(gamma, n + 1, n + 1, "pair:gamma");
+  memory->create(exponent_d, n + 1, n + 1, "pair:exponent_d");
+  memory->create(exponent_c, n + 1, n + 1, "pair:exponent_c");
+  memory->create(cut, n + 1, n + 1, "pair:cut");
+  memory->create(cut_d, n + 1, n + 1, "pair:cut_d");
+  memory->create(cut_d_set, n + 1, n + 1, "pair:cut_d_set");
+  for (int i = 0; i <= n; i++)
+    for (int j = 0; j <= n; j++) {
+      setflag[i][j] = 0;
+      cut_d_set[i][j] = 0;
+      a0[i][j] = gamma[i][j] = 0.0;
+      exponent_d[i][j] = 2.0;
+      exponent_c[i][j] = 1.0;
+      cut[i][j] = cut_d[i][j] = 0.0;
+    }
+  stride = n + 1;
+  coeffs.assign(static_cast<size_t>(stride) * stride, etd::PairCoefficients());
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairDPDGen::settings(int narg, char **arg)
+{
+  if (narg != 3)
+    error->all(FLERR, "Illegal pair_style dpd/gen command: expected 3 arguments (T cutoff seed), got {}",
+               narg);
+  temperature = utils::numeric(FLERR, arg[0], false, lmp);
+  cut_global = utils::numeric(FLERR, arg[1], false, lmp);
+  seed = utils::inumeric(FLERR, arg[2], false, lmp);
+  if (temperature < 0.0)
+    error->all(FLERR, "Illegal pair_style dpd/gen command: temperature must be >= 0, got {}", arg[0]);
+  if (cut_global <= 0.0)
+    error->all(FLERR, "Illegal pair_style dpd/gen command: cutoff must be > 0, got {}", arg[1]);
+  if (seed <= 0)
+    error->all(FLERR, "Illegal pair_style dpd/gen command: seed must be a positive integer, got {}",
+               arg[2]);
+  noise = etd::PairNoise(static_cast<std::uint64_t>(seed), etd::NoiseStream::PairScalar);
+
+  // as in stock pair styles: a new global cutoff resets the conservative cutoffs already set
+  if (allocated) {
+    for (int i = 1; i <= atom->ntypes; i++)
+      for (int j = i; j <= atom->ntypes; j++)
+        if (setflag[i][j]) cut[i][j] = cut_global;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J a gamma s [cutoff] [cut_d rcD] [exp_c p]
+------------------------------------------------------------------------- */
+
+void PairDPDGen::coeff(int narg, char **arg)
+{
+  if (narg < 5)
+    error->all(FLERR, "Incorrect args for pair_coeff dpd/gen: expected I J a gamma s [cutoff] "
+               "[cut_d rcD] [exp_c p], got {} arguments", narg);
+  if (!allocated) allocate();
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+  const double a_one = utils::numeric(FLERR, arg[2], false, lmp);
+  const double gamma_one = utils::numeric(FLERR, arg[3], false, lmp);
+  const double s_one = utils::numeric(FLERR, arg[4], false, lmp);
+  if (gamma_one < 0.0) error->all(FLERR, "pair_coeff dpd/gen: gamma must be >= 0, got {}", arg[3]);
+  if (s_one <= 0.0)
+    error->all(FLERR, "pair_coeff dpd/gen: dissipative exponent s must be > 0, got {}", arg[4]);
+
+  double cut_one = cut_global;
+  double cut_d_one = -1.0;
+  double p_one = 1.0;
+  int iarg = 5;
+  if (iarg < narg && !is_keyword(arg[iarg])) {
+    cut_one = utils::numeric(FLERR, arg[iarg], false, lmp);
+    if (cut_one <= 0.0) error->all(FLERR, "pair_coeff dpd/gen: cutoff must be > 0, got {}", arg[iarg]);
+    iarg++;
+  }
+  while (iarg < narg) {
+    if (std::strcmp(arg[iarg], "cut_d") == 0) {
+      if (iarg + 2 > narg) error->all(FLERR, "pair_coeff dpd/gen: keyword cut_d needs a value");
+      cut_d_one = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (cut_d_one <= 0.0)
+        error->all(FLERR, "pair_coeff dpd/gen: cut_d must be > 0, got {}", arg[iarg + 1]);
+      iarg += 2;
+    } else if (std::strcmp(arg[iarg], "exp_c") == 0) {
+      if (iarg + 2 > narg) error->all(FLERR, "pair_coeff dpd/gen: keyword exp_c needs a value");
+      p_one = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (p_one <= 0.0)
+        error->all(FLERR, "pair_coeff dpd/gen: conservative exponent exp_c must be > 0, got {}",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else {
+      error->all(FLERR, "pair_coeff dpd/gen: unknown keyword or extra argument '{}'", arg[iarg]);
+    }
+  }
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++) {
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      a0[i][j] = a_one;
+      gamma[i][j] = gamma_one;
+      exponent_d[i][j] = s_one;
+      exponent_c[i][j] = p_one;
+      cut[i][j] = cut_one;
+      cut_d_set[i][j] = cut_d_one > 0.0 ? 1 : 0;
+      cut_d[i][j] = cut_d_one > 0.0 ? cut_d_one : cut_one;
+      setflag[i][j] = 1;
+      count++;
+    }
+  }
+  if (count == 0) error->all(FLERR, "pair_coeff dpd/gen: no type pairs selected by {} {}", arg[0], arg[1]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairDPDGen::init_style()
+{
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "Pair style dpd/gen requires ghost atoms store velocity: use 'comm_modify vel yes'");
+  if (atom->tag_enable == 0)
+    error->all(FLERR, "Pair style dpd/gen requires atom IDs (its noise is keyed on them)");
+  if (update->dt <= 0.0) error->all(FLERR, "Pair style dpd/gen requires a positive timestep");
+  etd::compat::request_half_list(neighbor, this, instance_me);
+}
+
+double PairDPDGen::init_one(int i, int j)
+{
+  if (setflag[i][j] == 0)
+    error->all(FLERR, "Pair style dpd/gen: pair coefficients for types {} {} are not set", i, j);
+
+  const double rc_d = cut_d_set[i][j] ? cut_d[i][j] : cut[i][j];
+  cut_d[i][j] = rc_d;
+  const double kT = force->boltz * temperature;
+  etd::PairCoefficients c;
+  c.set(a0[i][j], gamma[i][j], exponent_d[i][j], exponent_c[i][j], cut[i][j], rc_d, kT);
+  coeffs[i * stride + j] = c;
+  coeffs[j * stride + i] = c;
+
+  a0[j][i] = a0[i][j];
+  gamma[j][i] = gamma[i][j];
+  exponent_d[j][i] = exponent_d[i][j];
+  exponent_c[j][i] = exponent_c[i][j];
+  cut[j][i] = cut[i][j];
+  cut_d[j][i] = cut_d[i][j];
+  cut_d_set[j][i] = cut_d_set[i][j];
+  return MAX(cut[i][j], rc_d);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairDPDGen::grow_extras()
+{
+  if (atom->nmax <= nmax_extras) return;
+  nmax_extras = atom->nmax;
+  if (want_friction) memory->grow(friction, nmax_extras, FRICTION_VALUES, "pair:friction");
+  if (want_split) memory->grow(split, nmax_extras, SPLIT_VALUES, "pair:split");
+}
+
+void PairDPDGen::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  const bool extras = want_friction || want_split;
+  if (extras) {
+    if (!friction && want_friction) nmax_extras = 0;
+    if (!split && want_split) nmax_extras = 0;
+    grow_extras();
+    const int nzero = force->newton_pair ? atom->nlocal + atom->nghost : atom->nlocal;
+    if (want_friction && nzero > 0)
+      std::memset(&friction[0][0], 0, sizeof(double) * FRICTION_VALUES * nzero);
+    if (want_split && nzero > 0) std::memset(&split[0][0], 0, sizeof(double) * SPLIT_VALUES * nzero);
+  }
+
+  if (evflag) {
+    if (extras) eval<1, 1>(); else eval<1, 0>();
+  } else {
+    if (extras) eval<0, 1>(); else eval<0, 0>();
+  }
+
+  if (extras && force->newton_pair) etd::compat::reverse_comm(comm, this);
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+template <int EVFLAG, int EXTRAS> void PairDPDGen::eval()
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  const int *type = atom->type;
+  const tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal;
+  const double *special_lj = force->special_lj;
+  const int newton_pair = force->newton_pair;
+  const double inv_sqrt_dt = 1.0 / std::sqrt(update->dt);
+  const std::int64_t step = update->ntimestep;
+
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
+    const double vxi = v[i][0], vyi = v[i][1], vzi = v[i][2];
+    const int itype = type[i];
+    const tagint tag_i = tag[i];
+    const etd::PairCoefficients *crow = &coeffs[itype * stride];
+    const double *cutsqi = cutsq[itype];
+    const int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    double fxi = 0.0, fyi = 0.0, fzi = 0.0;
+
+    for (int jj = 0; jj < jnum; jj++) {
+      int j = jlist[jj];
+      const double factor = special_lj[sbmask(j)];
+      j &= NEIGHMASK;
+      const double delx = xi - x[j][0];
+      const double dely = yi - x[j][1];
+      const double delz = zi - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      const int jtype = type[j];
+      if (rsq >= cutsqi[jtype]) continue;
+      const double r = std::sqrt(rsq);
+      if (r < EPSILON) continue;
+      const double rinv = 1.0 / r;
+      const etd::PairCoefficients &c = crow[jtype];
+
+      const double e_dot_v =
+          (delx * (vxi - v[j][0]) + dely * (vyi - v[j][1]) + delz * (vzi - v[j][2])) * rinv;
+      const double theta = (rsq < c.rcsq_d) ? noise.gaussian(tag_i, tag[j], step) : 0.0;
+      const etd::PairForce pf = etd::pair_force(c, rsq, r, e_dot_v, theta, inv_sqrt_dt, factor);
+      const double fpair = pf.total() * rinv;
+
+      fxi += delx * fpair;
+      fyi += dely * fpair;
+      fzi += delz * fpair;
+      const bool update_j = newton_pair || j < nlocal;
+      if (update_j) {
+        f[j][0] -= delx * fpair;
+        f[j][1] -= dely * fpair;
+        f[j][2] -= delz * fpair;
+      }
+
+      if (EXTRAS) {
+        const double ex = delx * rinv, ey = dely * rinv, ez = delz * rinv;
+        if (want_friction) {
+          const double gx = pf.friction * ex * ex, gy = pf.friction * ey * ey,
+                       gz = pf.friction * ez * ez;
+          friction[i][0] += gx; friction[i][1] += gy; friction[i][2] += gz;
+          if (update_j) { friction[j][0] += gx; friction[j][1] += gy; friction[j][2] += gz; }
+        }
+        if (want_split) {
+          const double parts[3] = {pf.conservative, pf.dissipative, pf.random};
+          for (int k = 0; k < 3; k++) {
+            split[i][3 * k + 0] += parts[k] * ex;
+            split[i][3 * k + 1] += parts[k] * ey;
+            split[i][3 * k + 2] += parts[k] * ez;
+            if (update_j) {
+              split[j][3 * k + 0] -= parts[k] * ex;
+              split[j][3 * k + 1] -= parts[k] * ey;
+              split[j][3 * k + 2] -= parts[k] * ez;
+            }
+          }
+        }
+      }
+
+      if (EVFLAG) {
+        const double evdwl = eflag_either ? etd::pair_energy(c, rsq, r, factor) : 0.0;
+        ev_tally(i, j, nlocal, newton_pair, evdwl, 0.0, fpair, delx, dely, delz);
+      }
+    }
+    f[i][0] += fxi;
+    f[i][1] += fyi;
+    f[i][2] += fzi;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int PairDPDGen::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  const int last = first + n;
+  for (int i = first; i < last; i++) {
+    if (want_friction)
+      for (int k = 0; k < FRICTION_VALUES; k++) buf[m++] = friction[i][k];
+    if (want_split)
+      for (int k = 0; k < SPLIT_VALUES; k++) buf[m++] = split[i][k];
+  }
+  return m;
+}
+
+void PairDPDGen::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int i = 0; i < n; i++) {
+    const int j = list[i];
+    if (want_friction)
+      for (int k = 0; k < FRICTION_VALUES; k++) friction[j][k] += buf[m++];
+    if (want_split)
+      for (int k = 0; k < SPLIT_VALUES; k++) split[j][k] += buf[m++];
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairDPDGen::write_restart_settings(FILE *fp)
+{
+  fwrite(&temperature, sizeof(double), 1, fp);
+  fwrite(&cut_global, sizeof(double), 1, fp);
+  fwrite(&seed, sizeof(int), 1, fp);
+  fwrite(&mix_flag, sizeof(int), 1, fp);
+}
+
+void PairDPDGen::read_restart_settings(FILE *fp)
+{
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &temperature, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &seed, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &mix_flag, sizeof(int), 1, fp, nullptr, error);
+  }
+  MPI_Bcast(&temperature, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&seed, 1, MPI_INT, 0, world);
+  MPI_Bcast(&mix_flag, 1, MPI_INT, 0, world);
+  noise = etd::PairNoise(static_cast<std::uint64_t>(seed), etd::NoiseStream::PairScalar);
+}
+
+void PairDPDGen::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j]) {
+        const double values[6] = {a0[i][j], gamma[i][j], exponent_d[i][j], exponent_c[i][j],
+                                  cut[i][j], cut_d[i][j]};
+        fwrite(values, sizeof(double), 6, fp);
+        fwrite(&cut_d_set[i][j], sizeof(int), 1, fp);
+      }
+    }
+}
+
+void PairDPDGen::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  const int me = comm->me;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (setflag[i][j]) {
+        double values[6];
+        if (me == 0) {
+          utils::sfread(FLERR, values, sizeof(double), 6, fp, nullptr, error);
+          utils::sfread(FLERR, &cut_d_set[i][j], sizeof(int), 1, fp, nullptr, error);
+        }
+        MPI_Bcast(values, 6, MPI_DOUBLE, 0, world);
+        MPI_Bcast(&cut_d_set[i][j], 1, MPI_INT, 0, world);
+        a0[i][j] = values[0];
+        gamma[i][j] = values[1];
+        exponent_d[i][j] = values[2];
+        exponent_c[i][j] = values[3];
+        cut[i][j] = values[4];
+        cut_d[i][j] = values[5];
+      }
+    }
+}
+
+void PairDPDGen::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    fprintf(fp, "%d %.15g %.15g %.15g %.15g cut_d %.15g exp_c %.15g\n", i, a0[i][i], gamma[i][i],
+            exponent_d[i][i], cut[i][i], cut_d[i][i], exponent_c[i][i]);
+}
+
+void PairDPDGen::write_data_all(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      fprintf(fp, "%d %d %.15g %.15g %.15g %.15g cut_d %.15g exp_c %.15g\n", i, j, a0[i][j],
+              gamma[i][j], exponent_d[i][j], cut[i][j], cut_d[i][j], exponent_c[i][j]);
+}
+
+/* ----------------------------------------------------------------------
+   conservative part only, as stock pair dpd: the other parts depend on velocities and noise
+------------------------------------------------------------------------- */
+
+double PairDPDGen::single(int, int, int itype, int jtype, double rsq, double, double factor_lj,
+                          double &fforce)
+{
+  fforce = 0.0;
+  const etd::PairCoefficients &c = coefficients(itype, jtype);
+  if (rsq >= c.rcsq_c) return 0.0;
+  const double r = std::sqrt(rsq);
+  if (r < EPSILON) return 0.0;
+  const double q = 1.0 - r * c.inv_rc_c;
+  fforce = factor_lj * c.a * etd::power_of(q, c.conservative_kind, c.p) / r;
+  return etd::pair_energy(c, rsq, r, factor_lj);
+}
+
+void *PairDPDGen::extract(const char *name, int &dim)
+{
+  dim = 2;
+  if (std::strcmp(name, "a0") == 0) return (void *) a0;
+  if (std::strcmp(name, "gamma") == 0) return (void *) gamma;
+  if (std::strcmp(name, "s") == 0) return (void *) exponent_d;
+  if (std::strcmp(name, "exp_c") == 0) return (void *) exponent_c;
+  if (std::strcmp(name, "cut_d") == 0) return (void *) cut_d;
+  return nullptr;
+}
+
+double PairDPDGen::memory_usage()
+{
+  double bytes = Pair::memory_usage();
+  bytes += static_cast<double>(nmax_extras) *
+      ((friction ? FRICTION_VALUES : 0) + (split ? SPLIT_VALUES : 0)) * sizeof(double);
+  return bytes;
+}

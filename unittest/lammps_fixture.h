@@ -1,0 +1,50 @@
+// ETD-DPD test support: an in-process LAMMPS instance with the plugin loaded.
+#ifndef ETD_LAMMPS_FIXTURE_H
+#define ETD_LAMMPS_FIXTURE_H
+
+#include <mpi.h>
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS { class LAMMPS; }
+
+namespace etdtest {
+
+class Lammps {
+ public:
+  // comm: the ranks this instance runs on (MPI_COMM_WORLD by default)
+  explicit Lammps(MPI_Comm comm = MPI_COMM_WORLD, bool load_plugin = true);
+  ~Lammps();
+  Lammps(const Lammps &) = delete;
+  Lammps &operator=(const Lammps &) = delete;
+
+  void cmd(const std::string &line);                   // throws std::runtime_error on ERROR
+  void cmds(const std::vector<std::string> &lines);
+  // Runs the command and returns the LAMMPS error message ("" if it succeeded).
+  std::string error_of(const std::string &line);
+  std::string error_of(const std::vector<std::string> &lines);
+
+  // per-atom property ordered by atom ID, on every rank of the instance
+  std::vector<double> gather(const std::string &name, int count = 3);
+  std::vector<double> gather_compute(const std::string &id, int columns);    // per-atom compute
+  double thermo(const std::string &keyword);
+  double compute_scalar(const std::string &id);
+  double compute_vector(const std::string &id, int index);    // 0-based
+  double fix_vector(const std::string &id, int index);
+  long natoms();
+
+  LAMMPS_NS::LAMMPS *lmp = nullptr;
+  MPI_Comm comm;
+};
+
+// A data file with n atoms at random positions in a cube of side L (deterministic).
+void write_random_data(const std::string &path, int natoms, double L, unsigned seed,
+                       int ntypes = 1, double vmax = 0.0);
+std::string work_file(const std::string &name);    // a path in the test's build folder
+int world_rank();
+int world_size();
+
+}    // namespace etdtest
+
+#endif

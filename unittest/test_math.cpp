@@ -1,0 +1,189 @@
+// Unit tests of the pure math: weights, pair kernel, energy, ETD coefficients, pair noise.
+#include "dpd_kernel.h"
+#include "dpd_random.h"
+#include "etd_coefficients.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <vector>
+
+namespace {
+
+// long double references: series for |z| <= 1, closed form beyond (cancellation is harmless
+// with a 64-bit mantissa there)
+long double phi1_reference(long double z)
+{
+  if (std::fabs(z) <= 1.0L) {
+    long double term = 1.0L, sum = 1.0L;
+    for (int k = 1; k < 40; ++k) { term *= z / (k + 1); sum += term; }
+    return sum;
+  }
+  return std::expm1(z) / z;
+}
+
+long double phi2_reference(long double z)
+{
+  if (std::fabs(z) <= 1.0L) {
+    long double term = 0.5L, sum = 0.5L;
+    for (int k = 1; k < 40; ++k) { term *= z / (k + 2); sum += term; }
+    return sum;
+  }
+  return (std::expm1(z) - z) / (z * z);
+}
+
+std::vector<double> z_grid()
+{
+  std::vector<double> zs = {0.0, -1e-300, -1e-17, -1e-12, -1e-8, -1e-5, -1e-3, -0.1, -0.5,
+                            -0.999, -1.0, -1.001, -2.0, -10.0, -50.0, -300.0, -700.0};
+  for (double z = -1e-6; z > -700.0; z *= 1.37) zs.push_back(z);
+  return zs;
+}
+
+}    // namespace
+
+TEST(EtdCoefficients, Phi1AccurateFromZeroToMinus700)
+{
+  for (double z : z_grid()) {
+    const long double ref = phi1_reference(z);
+    EXPECT_NEAR(etd::phi1(z), static_cast<double>(ref), 1e-14 * std::fabs(static_cast<double>(ref))) << "z=" << z;
+  }
+  EXPECT_EQ(etd::phi1(0.0), 1.0);
+}
+
+TEST(EtdCoefficients, Phi2AccurateFromZeroToMinus700)
+{
+  for (double z : z_grid()) {
+    const long double ref = phi2_reference(z);
+    EXPECT_NEAR(etd::phi2(z), static_cast<double>(ref), 1e-14 * std::fabs(static_cast<double>(ref))) << "z=" << z;
+  }
+  EXPECT_EQ(etd::phi2(0.0), 0.5);
+}
+
+TEST(EtdCoefficients, ZeroFrictionIsExplicitEuler)
+{
+  for (int order : {1, 2}) {
+    const auto c = etd::etd_coefficients(0.0, 0.01, order);
+    EXPECT_EQ(c.decay, 1.0);
+    if (order == 1) {
+      EXPECT_EQ(c.current, 0.01);
+      EXPECT_EQ(c.previous, 0.0);
+    } else {    // Adams-Bashforth 2
+      EXPECT_DOUBLE_EQ(c.current, 0.015);
+      EXPECT_DOUBLE_EQ(c.previous, -0.005);
+    }
+  }
+}
+
+TEST(EtdCoefficients, MatchesPaperEquation7)
+{
+  // seed 000 eq 7 written with c = -rate: coefficients of A(t) and A(t - dt)
+  const double rate = 37.0, dt = 0.013, c = -rate, z = c * dt;
+  const auto k = etd::etd_coefficients(rate, dt, 2);
+  EXPECT_NEAR(k.current, ((z + 1) * std::exp(z) - 2 * z - 1) / (c * c * dt), 1e-15);
+  EXPECT_NEAR(k.previous, (-std::exp(z) + z + 1) / (c * c * dt), 1e-15);
+  const auto k1 = etd::etd_coefficients(rate, dt, 1);
+  EXPECT_NEAR(k1.current, (std::exp(z) - 1) / c, 1e-15);
+}
+
+TEST(EtdCoefficients, OuNoiseFactor)
+{
+  EXPECT_DOUBLE_EQ(etd::ou_noise_factor(0.0), 1.0);
+  const double z = -3.0;
+  EXPECT_NEAR(etd::ou_noise_factor(z), std::sqrt((1 - std::exp(2 * z)) / (-2 * z)), 1e-15);
+}
+
+TEST(Weights, DefinitionsAndCutoffs)
+{
+  EXPECT_DOUBLE_EQ(etd::dissipative_weight(0.3, 1.0, 2.0), 0.49);
+  EXPECT_DOUBLE_EQ(etd::dissipative_weight(0.36, 1.0, 0.5), 0.8);
+  EXPECT_DOUBLE_EQ(etd::random_weight(0.36, 1.0, 0.5), std::sqrt(0.8));
+  EXPECT_DOUBLE_EQ(etd::conservative_weight(0.75, 1.0, 0.5), 0.5);
+  EXPECT_EQ(etd::dissipative_weight(1.0, 1.0, 0.5), 0.0);
+  EXPECT_EQ(etd::dissipative_weight(1.2, 1.0, 0.5), 0.0);
+  for (double s : {0.25, 0.4244, 0.5, 1.0, 1.5, 2.0, 3.7})
+    for (double q : {0.0, 0.01, 0.3, 0.99, 1.0})
+      EXPECT_NEAR(etd::power_of(q, etd::classify_power(s), s), std::pow(q, s), 1e-15);
+}
+
+TEST(PairKernel, PartsAndFluctuationDissipation)
+{
+  etd::PairCoefficients c;
+  const double kT = 0.25;
+  c.set(1750.0, 20.48, 0.25, 0.5, 1.0, 1.5, kT);    // seed 000 colloid-solvent pair
+  EXPECT_NEAR(c.sigma, 3.2, 1e-12);
+  // inside both cutoffs
+  double r = 0.6, ev = -0.7, theta = 0.3, isdt = 1.0 / std::sqrt(0.001);
+  auto f = etd::pair_force(c, r * r, r, ev, theta, isdt);
+  EXPECT_NEAR(f.conservative, 1750.0 * std::sqrt(0.4), 1e-10);
+  EXPECT_NEAR(f.friction, 20.48 * std::pow(1 - 0.6 / 1.5, 0.25), 1e-12);
+  EXPECT_NEAR(f.dissipative, -f.friction * ev, 1e-12);
+  EXPECT_NEAR(f.random, 3.2 * std::pow(1 - 0.6 / 1.5, 0.125) * theta * isdt, 1e-10);
+  // rcC < r < rcD: dissipative and random only
+  r = 1.2;
+  f = etd::pair_force(c, r * r, r, ev, theta, isdt);
+  EXPECT_EQ(f.conservative, 0.0);
+  EXPECT_GT(std::fabs(f.dissipative), 0.0);
+  EXPECT_GT(std::fabs(f.random), 0.0);
+  // rcD < r < rcC: conservative only
+  etd::PairCoefficients d;
+  d.set(25.0, 4.5, 2.0, 1.0, 1.5, 1.0, 1.0);
+  f = etd::pair_force(d, r * r, r, ev, theta, isdt);
+  EXPECT_NEAR(f.conservative, 25.0 * 0.2, 1e-12);
+  EXPECT_EQ(f.dissipative, 0.0);
+  EXPECT_EQ(f.random, 0.0);
+  // special bonds: C and D by the factor, R by its square root
+  const double sb = 0.36;
+  r = 0.4;
+  auto full = etd::pair_force(d, r * r, r, ev, theta, isdt);
+  auto scaled = etd::pair_force(d, r * r, r, ev, theta, isdt, sb);
+  EXPECT_NEAR(scaled.conservative, sb * full.conservative, 1e-12);
+  EXPECT_NEAR(scaled.dissipative, sb * full.dissipative, 1e-12);
+  EXPECT_NEAR(scaled.random, 0.6 * full.random, 1e-12);
+}
+
+TEST(PairKernel, EnergyIsIntegralOfConservativeForce)
+{
+  for (double p : {1.0, 0.5, 0.25, 1.7}) {
+    etd::PairCoefficients c;
+    c.set(18.75, 4.5, 0.5, p, 1.3, 0.9, 1.0);
+    for (double r = 0.05; r < 1.29; r += 0.0731) {
+      const double h = 1e-6;
+      const double fd = -(etd::pair_energy(c, (r + h) * (r + h), r + h) -
+                          etd::pair_energy(c, (r - h) * (r - h), r - h)) / (2 * h);
+      const auto f = etd::pair_force(c, r * r, r, 0.0, 0.0, 1.0);
+      EXPECT_NEAR(fd, f.conservative, 1e-6 * (1 + std::fabs(f.conservative))) << "p=" << p << " r=" << r;
+    }
+    EXPECT_EQ(etd::pair_energy(c, 1.3 * 1.3, 1.3), 0.0);
+  }
+}
+
+TEST(PairNoise, SymmetricKeyedAndIndependent)
+{
+  etd::PairNoise a(12345), b(12345), other_seed(12346);
+  EXPECT_EQ(a.gaussian(7, 3, 100), a.gaussian(3, 7, 100));
+  EXPECT_EQ(a.gaussian(7, 3, 100), b.gaussian(7, 3, 100));
+  EXPECT_NE(a.gaussian(7, 3, 100), a.gaussian(7, 3, 101));
+  EXPECT_NE(a.gaussian(7, 3, 100), a.gaussian(7, 4, 100));
+  EXPECT_NE(a.gaussian(7, 3, 100), other_seed.gaussian(7, 3, 100));
+  etd::PairNoise matrix(12345, etd::NoiseStream::PairMatrix);
+  EXPECT_NE(a.gaussian(7, 3, 100), matrix.gaussian(7, 3, 100));
+}
+
+TEST(PairNoise, UnitGaussianMoments)
+{
+  // 400k draws: standard errors of mean, variance and kurtosis are 0.0016, 0.0022 and 0.0077
+  etd::PairNoise noise(2024);
+  const int n = 400000;
+  double s1 = 0, s2 = 0, s4 = 0, lag = 0, prev = 0;
+  for (int k = 0; k < n; k++) {
+    const double g = noise.gaussian(k % 997 + 1, k / 997 + 2000, k % 13);
+    s1 += g; s2 += g * g; s4 += g * g * g * g; lag += g * prev; prev = g;
+  }
+  const double mean = s1 / n, var = s2 / n - mean * mean;
+  EXPECT_NEAR(mean, 0.0, 5 * 0.0016);
+  EXPECT_NEAR(var, 1.0, 5 * 0.0022);
+  EXPECT_NEAR(s4 / n, 3.0, 5 * 0.0077);
+  EXPECT_NEAR(lag / n, 0.0, 5 * 0.0016);
+}
