@@ -87,6 +87,32 @@ TEST(EtdCoefficients, MatchesPaperEquation7)
   EXPECT_NEAR(k1.current, (std::exp(z) - 1) / c, 1e-15);
 }
 
+TEST(EtdCoefficients, ModelEquationOrders)
+{
+  // dv/dt = -lambda v + A(t), A = cos(t), v(0) = 1: exact solution known; stiff lambda = 50
+  const double lambda = 50.0, T = 1.0;
+  auto exact = [&](double t) {
+    const double k = 1.0 / (lambda * lambda + 1.0);
+    return (1.0 - lambda * k) * std::exp(-lambda * t) + k * (lambda * std::cos(t) + std::sin(t));
+  };
+  for (int order : {1, 2}) {
+    double errors[3];
+    int idx = 0;
+    for (int n : {200, 400, 800}) {
+      const double dt = T / n;
+      double v = 1.0, previous = std::cos(0.0);
+      for (int step = 0; step < n; step++) {
+        const double forcing = std::cos(step * dt);
+        const auto c = etd::etd_coefficients(lambda, dt, step == 0 ? 1 : order);
+        v = c.decay * v + c.current * forcing + c.previous * previous;
+        previous = forcing;
+      }
+      errors[idx++] = std::fabs(v - exact(T));
+    }
+    EXPECT_NEAR(std::log2(errors[1] / errors[2]), order, 0.1) << "order " << order;
+  }
+}
+
 TEST(EtdCoefficients, OuNoiseFactor)
 {
   EXPECT_DOUBLE_EQ(etd::ou_noise_factor(0.0), 1.0);
