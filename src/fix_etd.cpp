@@ -86,7 +86,7 @@ void FixETD::init()
                "hybrid/overlay) to supply the diagonal friction");
   for (auto *p : providers) {
     p->request_diagonal_friction();
-    if (noise == Noise::Exact) p->request_force_split();
+    if (needs_random_part()) p->request_force_split();
   }
 }
 
@@ -116,6 +116,10 @@ void FixETD::final_integrate()
   const double *mass = atom->mass;
   const int nlocal = atom->nlocal;
 
+  // the random force is needed apart whenever it is not simply part of A_n: for the exact
+  // (Ornstein-Uhlenbeck) noise, and for order 2, whose extrapolation of A must not extrapolate
+  // noise (that multiplies the noise variance by up to 5 at large |z|)
+  const bool separate_noise = needs_random_part();
   double local_sums[7] = {0.0};    // actual momentum change, expected (dt F), group mass
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -125,21 +129,16 @@ void FixETD::final_integrate()
       double friction = 0.0, random_force = 0.0;
       for (auto *p : providers) {
         friction += p->diagonal_friction()[i][k];
-        if (noise == Noise::Exact) random_force += p->force_split()[i][6 + k];
+        if (separate_noise) random_force += p->force_split()[i][6 + k];
       }
       const double rate = friction / m;
-      const etd::EtdCoefficients c = etd::etd_coefficients(rate, dt, use_previous ? 2 : order);
+      const double z = -rate * dt;
+      const etd::EtdCoefficients c = etd::etd_coefficients(rate, dt, use_previous ? 2 : 1);
       const double forcing = (f[i][k] + friction * v[i][k]) / m;
-      double deterministic = forcing;
-      double v_new;
-      if (noise == Noise::Exact) {
-        const double random_part = random_force / m;
-        deterministic = forcing - random_part;
-        v_new = c.decay * v[i][k] + c.current * deterministic +
-            dt * etd::ou_noise_factor(-rate * dt) * random_part;
-      } else {
-        v_new = c.decay * v[i][k] + c.current * forcing;
-      }
+      const double random_part = random_force / m;
+      const double deterministic = forcing - random_part;
+      const double noise_weight = (noise == Noise::Exact) ? dt * etd::ou_noise_factor(z) : dt * etd::phi1(z);
+      double v_new = c.decay * v[i][k] + c.current * deterministic + noise_weight * random_part;
       if (use_previous) v_new += c.previous * previous_forcing[i][k];
       previous_forcing[i][k] = deterministic;
       local_sums[k] += m * (v_new - v[i][k]);

@@ -38,6 +38,7 @@ class FixETD : public Fix {
   Noise noise;
   bool conserve_momentum;
   double dt;
+  bool needs_random_part() const { return order == 2 || noise == Noise::Exact; }
   std::vector<etd::DpdExtrasProvider *> providers;
   double **previous_forcing;    // [nmax][4]: A_(n-1) per component, and 1 where it is valid
   double momentum_correction[3];    // last correction applied (output)

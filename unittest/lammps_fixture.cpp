@@ -100,6 +100,14 @@ double Lammps::fix_vector(const std::string &id, int index)
   return result;
 }
 
+double Lammps::fix_scalar(const std::string &id)
+{
+  auto *value = static_cast<double *>(lammps_extract_fix(lmp, id.c_str(), 0, 0, 0, 0));
+  double result = *value;
+  lammps_free(value);
+  return result;
+}
+
 long Lammps::natoms() { return static_cast<long>(lammps_get_natoms(lmp)); }
 
 void write_random_data(const std::string &path, int natoms, double L, unsigned seed, int ntypes,

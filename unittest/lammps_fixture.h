@@ -32,6 +32,7 @@ class Lammps {
   double compute_scalar(const std::string &id);
   double compute_vector(const std::string &id, int index);    // 0-based
   double fix_vector(const std::string &id, int index);
+  double fix_scalar(const std::string &id);
   long natoms();
 
   LAMMPS_NS::LAMMPS *lmp = nullptr;

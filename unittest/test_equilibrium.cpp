@@ -1,1 +1,57 @@
+// Equilibrium temperature: dpd/gen with fix nve (m = 1) and fix etd (m = 0.01).
+// These runs take about 20 s together; they are part of the default suite (label physics).
+#include "lammps_fixture.h"
+
 #include <gtest/gtest.h>
+
+#include <cmath>
+
+using etdtest::Lammps;
+
+namespace {
+
+// mean kBT over the production run, sampled every 10 steps
+double mean_temperature(const std::string &pair_coeff, double mass, double dt, int natoms, double L,
+                        int equilibrate, int production, const std::string &integrator)
+{
+  const std::string data = etdtest::work_file("equilibrium_" + std::to_string(natoms) + ".data");
+  etdtest::write_random_data(data, natoms, L, 31337, 1, 0.0);
+  Lammps l;
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + data,
+          "mass 1 " + std::to_string(mass), "velocity all create 1.0 8731 mom yes dist gaussian",
+          "pair_style dpd/gen 1.0 1.0 4242", pair_coeff, "timestep " + std::to_string(dt),
+          "fix integrate all " + integrator, "run " + std::to_string(equilibrate) + " post no",
+          "reset_timestep 0",
+          "fix average all ave/time 10 " + std::to_string(production / 10) + " " +
+              std::to_string(production) + " c_thermo_temp",
+          "run " + std::to_string(production) + " post no"});
+  return l.fix_scalar("average");
+}
+
+}    // namespace
+
+// 3,000 atoms: one sample of kBT has relative spread sqrt(2/(3N)) = 1.5 %; 2,000 steps of
+// dt = 0.01 hold about 100 independent samples, so the mean is known to about 0.15 % and the
+// 1 % tolerance is over 6 standard errors.
+TEST(Equilibrium, VelocityVerletHoldsTemperatureForS2AndHalf)
+{
+  for (const char *s : {"2.0", "0.5"}) {
+    const double kT = mean_temperature(std::string("pair_coeff 1 1 25.0 4.5 ") + s, 1.0, 0.01,
+                                       3000, 10.0, 500, 2000, "nve");
+    std::printf("fix nve, m = 1, dt = 0.01, s = %s: kBT = %.4f\n", s, kT);
+    EXPECT_NEAR(kT, 1.0, 0.01) << "s = " << s;
+  }
+}
+
+// Seed 000's fluid at m = 0.01, dt = 0.001 (velocity-Verlet overheats by 10 % here). 4,000 atoms
+// over 3,000 steps: standard error of the mean about 0.1 %; tolerance 2 %.
+TEST(Equilibrium, EtdHoldsTemperatureAtLowMass)
+{
+  // order 2 is not asserted here: at this stiffness it overheats (doc/fix_etd.rst)
+  for (const char *order : {"1"}) {
+    const double kT = mean_temperature("pair_coeff 1 1 18.75 4.5 0.5", 0.01, 0.001, 4000, 10.0, 500,
+                                       3000, std::string("etd order ") + order);
+    std::printf("fix etd order %s, m = 0.01, dt = 0.001, s = 1/2: kBT = %.4f\n", order, kT);
+    EXPECT_NEAR(kT, 1.0, 0.02) << "order " << order;
+  }
+}
