@@ -10,7 +10,6 @@ namespace etd {
 //   conservative, dissipative and random parts of the pair force       (compute dpd/split)
 class DpdExtrasProvider {
  public:
-  virtual ~DpdExtrasProvider() = default;
   // Each user sets its flag once in init(); the pair style then fills the arrays every compute().
   virtual void request_diagonal_friction() = 0;
   virtual void request_force_split() = 0;
@@ -18,6 +17,11 @@ class DpdExtrasProvider {
   virtual double **force_split() = 0;          // [nlocal][9]: C xyz, D xyz, R xyz
   // Angular counterparts (dpd/fpm): nullptr where the style has no rotation.
   virtual double **rotational_friction() { return nullptr; }
+
+ protected:
+  // never deleted through this interface; non-virtual so that it does not constrain the
+  // exception specification of LAMMPS's virtual destructors (which differs between versions)
+  ~DpdExtrasProvider() = default;
 };
 
 }    // namespace etd

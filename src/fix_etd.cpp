@@ -30,6 +30,7 @@ FixETD::FixETD(LAMMPS *lmp, int narg, char **arg) :
 {
   time_integrate = 1;
   restart_peratom = 1;
+  maxexchange = STATE;    // per-atom values this fix adds to each migrating atom
   vector_flag = 1;
   size_vector = 3;
   extvector = 0;

@@ -29,7 +29,7 @@ void Lammps::cmd(const std::string &line)
   try {
     lmp->input->one(line);
   } catch (LAMMPS_NS::LAMMPSException &e) {
-    throw std::runtime_error("LAMMPS ERROR in '" + line + "': " + e.message);
+    throw std::runtime_error("LAMMPS ERROR in '" + line + "': " + e.what());
   }
 }
 
@@ -43,7 +43,8 @@ std::string Lammps::error_of(const std::string &line)
   try {
     lmp->input->one(line);
   } catch (LAMMPS_NS::LAMMPSException &e) {
-    return e.message.empty() ? std::string("(empty error)") : e.message;
+    const std::string message = e.what();
+    return message.empty() ? std::string("(empty error)") : message;
   }
   return "";
 }

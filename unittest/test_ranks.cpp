@@ -89,7 +89,14 @@ TEST_F(Ranks, EtdTrajectoryAgreesAcrossRankCounts)
         return x;
       }));
   if (etdtest::world_rank() != 0) return;
-  for (int o = 0; o < 2; o++)
-    for (int k = 1; k < 3; k++)
-      EXPECT_LT(max_abs_diff(results[3 * o + k], results[3 * o]), 1e-9) << "order " << o + 1 << " variant " << k;
+  // summation order differs between decompositions; round-off grows over the 20 steps of this
+  // stiff fluid (velocities up to about 40), so compare relative to the largest value
+  for (int o = 0; o < 2; o++) {
+    double scale = 0.0;
+    for (double v : results[3 * o]) scale = std::max(scale, std::fabs(v));
+    for (int k = 1; k < 3; k++) {
+      const double diff = max_abs_diff(results[3 * o + k], results[3 * o]);
+      EXPECT_LT(diff, 1e-10 * scale) << "order " << o + 1 << " variant " << k << " diff " << diff;
+    }
+  }
 }
