@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Long physics validation (not part of CI): equilibrium kBT against time step for fix etd
-# (order 1, both noise variants) and the stock dpd/ext + fix nve at m = 0.01, side by side with
+# (order 1 with both noise variants, and order 2) and the stock dpd/ext + fix nve at m = 0.01, side by side with
 # seed 000's Table 3. Takes about 10 minutes on 2 cores; writes doc/validation_temperature.md.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -16,6 +16,7 @@ run() {    # pair integrator dt
 for dt in 0.0005 0.001 0.003; do
   run gen etd "$dt"
   run gen "etd noise exact" "$dt"
+  run gen "etd order 2" "$dt"
 done
 for dt in 0.0005 0.001; do run stock nve "$dt"; done
 {

@@ -39,7 +39,6 @@ TEST(FixEtd, ZeroFrictionIsExplicitEuler)
   auto x0 = l.gather("x"), v0 = l.gather("v");
   l.cmd("run 1 post no");
   auto x1 = l.gather("x"), v1 = l.gather("v"), f1 = l.gather("f");
-  auto image = l.gather("image", 1);
   for (size_t i = 0; i < x0.size(); i++) {
     const double expected_x = x0[i] + 0.003 * v0[i];
     // positions may have been wrapped into the box: compare modulo the box length
@@ -113,7 +112,6 @@ TEST(FixEtd, AtomsOutsideTheGroupDoNotMove)
   l.cmds({"region wall block INF INF INF INF 0 1", "group wall region wall", "group mobile subtract all wall",
           "velocity wall set 0.5 0 0", "timestep 0.001", "fix 1 mobile etd"});
   auto x0 = l.gather("x"), v0 = l.gather("v");
-  auto mask_before = x0;
   l.cmd("run 10 post no");
   auto x1 = l.gather("x"), v1 = l.gather("v");
   int frozen = 0;
