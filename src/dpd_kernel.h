@@ -37,7 +37,9 @@ inline double power_of(double q, PowerKind kind, double exponent)
     case PowerKind::One: return q;
     case PowerKind::ThreeHalves: return q * std::sqrt(q);
     case PowerKind::Two: return q * q;
-    default: return std::pow(q, exponent);
+    // exp(e log q) is pow to a few ulp for 0 <= q <= 1 (q = 0 gives exp(-inf) = 0) and about
+    // 25 % cheaper than glibc's pow, which matters for s = 0.4244 in the pair loop
+    default: return std::exp(exponent * std::log(q));
   }
 }
 

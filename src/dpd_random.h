@@ -8,6 +8,8 @@
 
 #include <Random123/boxmuller.hpp>
 #include <Random123/philox.h>
+#include <boost/random/normal_distribution.hpp>
+
 #include <cstdint>
 
 namespace etd {
@@ -35,12 +37,44 @@ class PairNoise {
     out[0] = g0.x; out[1] = g0.y; out[2] = g1.x; out[3] = g1.y;
   }
 
-  // One unit Gaussian for pair (i, j): the scalar DPD noise theta_ij.
+  // One unit Gaussian for pair (i, j): the scalar DPD noise theta_ij. Boost.Random's ziggurat
+  // needs one 64-bit word almost always (no log, no sine), so a single Philox block serves the
+  // pair; the rare further words come from the following blocks. The draw stays a pure
+  // function of (seed, stream, pair, timestep).
   double gaussian(std::int64_t tag_i, std::int64_t tag_j, std::int64_t timestep) const
   {
-    const Generator::ctr_type bits = draw(tag_i, tag_j, timestep, 0);
-    return r123::boxmuller(bits.v[0], bits.v[1]).x;
+    BlockEngine words(*this, tag_i, tag_j, timestep);
+    return boost::random::normal_distribution<double>()(words);
   }
+
+  // The words of successive Philox blocks of one pair and timestep as a uniform random bit
+  // generator (what C++ and Boost distributions consume).
+  class BlockEngine {
+   public:
+    using result_type = std::uint64_t;
+    BlockEngine(const PairNoise &noise, std::int64_t tag_i, std::int64_t tag_j,
+                std::int64_t timestep)
+        : noise_(noise), tag_i_(tag_i), tag_j_(tag_j), timestep_(timestep)
+    {
+    }
+    static constexpr result_type min() { return 0; }
+    static constexpr result_type max() { return ~result_type(0); }
+    result_type operator()()
+    {
+      if (used_ == 4) {
+        words_ = noise_.draw(tag_i_, tag_j_, timestep_, block_++);
+        used_ = 0;
+      }
+      return words_.v[used_++];
+    }
+
+   private:
+    const PairNoise &noise_;
+    std::int64_t tag_i_, tag_j_, timestep_;
+    std::uint64_t block_ = 0;
+    Generator::ctr_type words_{};
+    int used_ = 4;
+  };
 
  private:
   Generator::ctr_type draw(std::int64_t tag_i, std::int64_t tag_j, std::int64_t timestep,

@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -121,24 +122,29 @@ void FixETD::final_integrate()
   // (Ornstein-Uhlenbeck) noise, and for order 2, whose extrapolation of A must not extrapolate
   // noise (that multiplies the noise variance by up to 5 at large |z|)
   const bool separate_noise = needs_random_part();
+  const bool exact_noise = (noise == Noise::Exact);
+  // the providers' arrays, looked up once per step rather than per atom and component
+  std::vector<double **> friction_arrays, split_arrays;
+  for (auto *p : providers) {
+    friction_arrays.push_back(p->diagonal_friction());
+    if (separate_noise) split_arrays.push_back(p->force_split());
+  }
   double local_sums[7] = {0.0};    // actual momentum change, expected (dt F), group mass
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const double m = rmass ? rmass[i] : mass[type[i]];
+    const double inv_m = 1.0 / m;
     const bool use_previous = (order == 2) && previous_forcing[i][3] != 0.0;
     for (int k = 0; k < 3; k++) {
       double friction = 0.0, random_force = 0.0;
-      for (auto *p : providers) {
-        friction += p->diagonal_friction()[i][k];
-        if (separate_noise) random_force += p->force_split()[i][6 + k];
-      }
-      const double rate = friction / m;
-      const double z = -rate * dt;
-      const etd::EtdCoefficients c = etd::etd_coefficients(rate, dt, use_previous ? 2 : 1);
-      const double forcing = (f[i][k] + friction * v[i][k]) / m;
-      const double random_part = random_force / m;
+      for (double **g : friction_arrays) friction += g[i][k];
+      for (double **split : split_arrays) random_force += split[i][6 + k];
+      const etd::EtdCoefficients c =
+          etd::etd_coefficients(friction * inv_m, dt, use_previous ? 2 : 1, exact_noise);
+      const double forcing = (f[i][k] + friction * v[i][k]) * inv_m;
+      const double random_part = random_force * inv_m;
       const double deterministic = forcing - random_part;
-      const double noise_weight = (noise == Noise::Exact) ? dt * etd::ou_noise_factor(z) : dt * etd::phi1(z);
+      const double noise_weight = exact_noise ? c.noise_exact : c.noise_piecewise;
       double v_new = c.decay * v[i][k] + c.current * deterministic + noise_weight * random_part;
       if (use_previous) v_new += c.previous * previous_forcing[i][k];
       previous_forcing[i][k] = deterministic;

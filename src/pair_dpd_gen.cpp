@@ -235,17 +235,18 @@ void PairDPDGen::compute(int eflag, int vflag)
     if (want_split && nzero > 0) std::memset(&split[0][0], 0, sizeof(double) * SPLIT_VALUES * nzero);
   }
 
+  // the extras are template flags so that the plain force loop carries none of their work
   if (evflag) {
-    if (extras) eval<1, 1>(); else eval<1, 0>();
+    if (want_split) eval<1, 1, 1>(); else if (want_friction) eval<1, 1, 0>(); else eval<1, 0, 0>();
   } else {
-    if (extras) eval<0, 1>(); else eval<0, 0>();
+    if (want_split) eval<0, 1, 1>(); else if (want_friction) eval<0, 1, 0>(); else eval<0, 0, 0>();
   }
 
   if (extras && force->newton_pair) etd::compat::reverse_comm(comm, this);
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
-template <int EVFLAG, int EXTRAS> void PairDPDGen::eval()
+template <int EVFLAG, int FRICTION, int SPLIT> void PairDPDGen::eval()
 {
   double **x = atom->x;
   double **v = atom->v;
@@ -274,6 +275,7 @@ template <int EVFLAG, int EXTRAS> void PairDPDGen::eval()
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
     double fxi = 0.0, fyi = 0.0, fzi = 0.0;
+    double gxi = 0.0, gyi = 0.0, gzi = 0.0;    // atom i's diagonal friction, kept in registers
 
     for (int jj = 0; jj < jnum; jj++) {
       int j = jlist[jj];
@@ -306,15 +308,16 @@ template <int EVFLAG, int EXTRAS> void PairDPDGen::eval()
         f[j][2] -= delz * fpair;
       }
 
-      if (EXTRAS) {
+      if (FRICTION || SPLIT) {
         const double ex = delx * rinv, ey = dely * rinv, ez = delz * rinv;
-        if (want_friction) {
-          const double gx = pf.friction * ex * ex, gy = pf.friction * ey * ey,
-                       gz = pf.friction * ez * ez;
-          friction[i][0] += gx; friction[i][1] += gy; friction[i][2] += gz;
+        if (FRICTION && want_friction) {
+          const double friction_per_rsq = pf.friction * rinv * rinv;
+          const double gx = friction_per_rsq * delx * delx, gy = friction_per_rsq * dely * dely,
+                       gz = friction_per_rsq * delz * delz;
+          gxi += gx; gyi += gy; gzi += gz;
           if (update_j) { friction[j][0] += gx; friction[j][1] += gy; friction[j][2] += gz; }
         }
-        if (want_split) {
+        if (SPLIT) {
           const double parts[3] = {pf.conservative, pf.dissipative, pf.random};
           for (int k = 0; k < 3; k++) {
             split[i][3 * k + 0] += parts[k] * ex;
@@ -337,6 +340,11 @@ template <int EVFLAG, int EXTRAS> void PairDPDGen::eval()
     f[i][0] += fxi;
     f[i][1] += fyi;
     f[i][2] += fzi;
+    if (FRICTION && want_friction) {
+      friction[i][0] += gxi;
+      friction[i][1] += gyi;
+      friction[i][2] += gzi;
+    }
   }
 }
 

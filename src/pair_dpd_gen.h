@@ -58,7 +58,7 @@ class PairDPDGen : public Pair, public etd::DpdExtrasProvider {
 
   void allocate();
   void grow_extras();
-  template <int EVFLAG, int EXTRAS> void eval();
+  template <int EVFLAG, int FRICTION, int SPLIT> void eval();
 };
 
 }    // namespace LAMMPS_NS

@@ -17,7 +17,7 @@ jobs=${ETD_DPD_JOBS:-$(nproc)}
 log() { printf '[etd-dpd] %s\n' "$*" >&2; }
 
 # ---- 1. Debian packages ------------------------------------------------------------------
-packages=(build-essential cmake libopenmpi-dev openmpi-bin libgtest-dev librandom123-dev
+packages=(build-essential cmake libopenmpi-dev openmpi-bin libgtest-dev librandom123-dev libboost-dev
           python3 python3-numpy python3-scipy python3-matplotlib dpkg-dev xz-utils)
 missing=()
 for p in "${packages[@]}"; do

@@ -120,6 +120,24 @@ TEST(EtdCoefficients, OuNoiseFactor)
   EXPECT_NEAR(etd::ou_noise_factor(z), std::sqrt((1 - std::exp(2 * z)) / (-2 * z)), 1e-15);
 }
 
+TEST(EtdCoefficients, SharedExpm1MatchesDirectFormulas)
+{
+  // the integrator's coefficients come from one expm1; they must equal the defining formulas
+  const double dt = 0.01;
+  for (double rate : {0.0, 1e-6, 0.3, 50.0, 99.9, 100.0, 270.0, 999.0, 5000.0, 70000.0}) {
+    const double z = -rate * dt;
+    for (int order : {1, 2}) {
+      const auto c = etd::etd_coefficients(rate, dt, order);
+      const double p2 = (order == 2) ? etd::phi2(z) : 0.0;
+      EXPECT_NEAR(c.decay, std::exp(z), 1e-15 * std::max(1.0, rate * 1e-10) + 1e-15 * std::exp(z));
+      EXPECT_NEAR(c.current, dt * (etd::phi1(z) + p2), 1e-14 * std::fabs(c.current));
+      EXPECT_NEAR(c.previous, -dt * p2, 1e-14 * std::fabs(dt * p2));
+      EXPECT_NEAR(c.noise_piecewise, dt * etd::phi1(z), 1e-14 * dt * etd::phi1(z));
+      EXPECT_NEAR(c.noise_exact, dt * etd::ou_noise_factor(z), 1e-14 * dt * etd::ou_noise_factor(z));
+    }
+  }
+}
+
 TEST(Weights, DefinitionsAndCutoffs)
 {
   EXPECT_DOUBLE_EQ(etd::dissipative_weight(0.3, 1.0, 2.0), 0.49);
@@ -203,10 +221,17 @@ TEST(PairNoise, UnitGaussianMoments)
   etd::PairNoise noise(2024);
   const int n = 400000;
   double s1 = 0, s2 = 0, s4 = 0, lag = 0, prev = 0;
+  long inner = 0, tail = 0;
   for (int k = 0; k < n; k++) {
     const double g = noise.gaussian(k % 997 + 1, k / 997 + 2000, k % 13);
     s1 += g; s2 += g * g; s4 += g * g * g * g; lag += g * prev; prev = g;
+    inner += std::fabs(g) < 0.5;
+    tail += std::fabs(g) > 2.0;
   }
+  // shape, not just moments: P(|g| < 0.5) = 0.382925, P(|g| > 2) = 0.045500 (binomial errors
+  // 0.00077 and 0.00033)
+  EXPECT_NEAR(double(inner) / n, 0.382925, 5 * 0.00077);
+  EXPECT_NEAR(double(tail) / n, 0.045500, 5 * 0.00033);
   const double mean = s1 / n, var = s2 / n - mean * mean;
   EXPECT_NEAR(mean, 0.0, 5 * 0.0016);
   EXPECT_NEAR(var, 1.0, 5 * 0.0022);
