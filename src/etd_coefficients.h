@@ -1,4 +1,4 @@
-// ETD-DPD: coefficients of the exponential-time-differencing update (seed 000 eqs 3-7, 28-31).
+// ETD-DPD: coefficients of the exponential-time-differencing update (Mai-Duy et al. 2013, eqs 3-7, 28-31).
 //
 // For one velocity component with diagonal friction rate c = Gamma/m and z = -c dt:
 //   first order:  v' = e^z v + dt phi1(z) A_n

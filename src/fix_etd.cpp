@@ -1,7 +1,7 @@
 // ETD-DPD: fix etd. Positions: x += v dt. Velocities, per component, after the forces of the
 // new positions (and old velocities) are known:
-//   v' = e^z v + dt [phi1 A_n]                                  (order 1, seed 000 eq 31)
-//   v' = e^z v + dt [(phi1 + phi2) A_n - phi2 A_(n-1)]          (order 2, seed 000 eq 7)
+//   v' = e^z v + dt [phi1 A_n]                                  (order 1, Mai-Duy et al. 2013, eq 31)
+//   v' = e^z v + dt [(phi1 + phi2) A_n - phi2 A_(n-1)]          (order 2, Mai-Duy et al. 2013, eq 7)
 // with z = -Gamma dt / m and A = (F + Gamma v)/m, Gamma the diagonal friction from the pair style.
 #include "fix_etd.h"
 

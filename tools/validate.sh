@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Long physics validation (not part of CI): equilibrium kBT against time step for fix etd
 # (order 1 with both noise variants, and order 2) and the stock dpd/ext + fix nve at m = 0.01, side by side with
-# seed 000's Table 3. Takes about 10 minutes on 2 cores; writes doc/validation_temperature.md.
+# Mai-Duy et al.'s (2013) Table 3. Takes about 10 minutes on 2 cores; writes doc/validation_temperature.md.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 prefix=$(bash "$here/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')

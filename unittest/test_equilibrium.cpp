@@ -1,5 +1,5 @@
 // Equilibrium temperature: dpd/gen with fix nve (m = 1) and fix etd (m = 0.01).
-// These runs take about 20 s together; they are part of the default suite (label physics).
+// These runs take about 30 s together; they are part of the default suite (label physics).
 #include "lammps_fixture.h"
 
 #include <gtest/gtest.h>
@@ -30,14 +30,14 @@ double mean_temperature(const std::string &pair_coeff, double mass, double dt, i
 
 }    // namespace
 
-// 3,000 atoms: one sample of kBT has relative spread sqrt(2/(3N)) = 1.5 %; 2,000 steps of
-// dt = 0.01 hold about 100 independent samples, so the mean is known to about 0.15 % and the
-// 1 % tolerance is over 6 standard errors.
+// velocity-Verlet at dt = 0.01 runs about 0.7 % hot here (stock pair dpd too: 1.0056-1.0098 over
+// 10,000 steps for three seeds), so the 1 % tolerance needs a well-converged mean: 3,000 atoms
+// over 16,000 steps scatter by about 0.15 % between seeds.
 TEST(Equilibrium, VelocityVerletHoldsTemperatureForS2AndHalf)
 {
   for (const char *s : {"2.0", "0.5"}) {
     const double kT = mean_temperature(std::string("pair_coeff 1 1 25.0 4.5 ") + s, 1.0, 0.01,
-                                       3000, 10.0, 500, 2000, "nve");
+                                       3000, 10.0, 500, 16000, "nve");
     std::printf("fix nve, m = 1, dt = 0.01, s = %s: kBT = %.4f\n", s, kT);
     EXPECT_NEAR(kT, 1.0, 0.01) << "s = " << s;
   }

@@ -78,7 +78,7 @@ TEST(EtdCoefficients, ZeroFrictionIsExplicitEuler)
 
 TEST(EtdCoefficients, MatchesPaperEquation7)
 {
-  // seed 000 eq 7 written with c = -rate: coefficients of A(t) and A(t - dt)
+  // Mai-Duy et al. 2013, eq 7 written with c = -rate: coefficients of A(t) and A(t - dt)
   const double rate = 37.0, dt = 0.013, c = -rate, z = c * dt;
   const auto k = etd::etd_coefficients(rate, dt, 2);
   EXPECT_NEAR(k.current, ((z + 1) * std::exp(z) - 2 * z - 1) / (c * c * dt), 1e-15);
@@ -155,7 +155,7 @@ TEST(PairKernel, PartsAndFluctuationDissipation)
 {
   etd::PairCoefficients c;
   const double kT = 0.25;
-  c.set(1750.0, 20.48, 0.25, 0.5, 1.0, 1.5, kT);    // seed 000 colloid-solvent pair
+  c.set(1750.0, 20.48, 0.25, 0.5, 1.0, 1.5, kT);    // Mai-Duy et al. 2013 colloid-solvent pair
   EXPECT_NEAR(c.sigma, 3.2, 1e-12);
   // inside both cutoffs
   double r = 0.6, ev = -0.7, theta = 0.3, isdt = 1.0 / std::sqrt(0.001);
