@@ -2,7 +2,11 @@
 #ifndef ETD_DPD_FRICTION_PROVIDER_H
 #define ETD_DPD_FRICTION_PROVIDER_H
 
+#include <cstdint>
+
 namespace etd {
+
+struct PairCoefficients;
 
 // Per-atom extras a pair style accumulates during compute() on request (owned atoms complete,
 // ghost contributions already reverse-communicated):
@@ -17,6 +21,14 @@ class DpdExtrasProvider {
   virtual double **force_split() = 0;          // [nlocal][9]: C xyz, D xyz, R xyz
   // Angular counterparts (dpd/fpm): nullptr where the style has no rotation.
   virtual double **rotational_friction() { return nullptr; }
+
+  // For fix etd's implicit scheme, which applies friction and noise itself: the style's DPD
+  // coefficients per type pair (nullptr where it does not handle the pair), the seed of its
+  // noise, and a switch (set in each init, cleared by the style's own init) that leaves the
+  // style computing only its non-dissipative forces.
+  virtual const PairCoefficients *dpd_coefficients(int /*itype*/, int /*jtype*/) { return nullptr; }
+  virtual std::uint64_t noise_seed() const { return 0; }
+  virtual void request_conservative_only() {}
 
  protected:
   // never deleted through this interface; non-virtual so that it does not constrain the

@@ -1,9 +1,13 @@
 // ETD-DPD: plugin entry point; registers every style of the package with LAMMPS.
 #include "compute_dpd_split.h"
 #include "fix_etd.h"
+#include "fix_etd_implicit.h"
+#include "error.h"
 #include "lammpsplugin.h"
 #include "pair_dpd_gen.h"
 #include "version.h"
+
+#include <string>
 
 using namespace LAMMPS_NS;
 
@@ -13,7 +17,18 @@ Compute *create_compute_dpd_split(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputeDPDSplit(lmp, narg, arg);
 }
-Fix *create_fix_etd(LAMMPS *lmp, int narg, char **arg) { return new FixETD(lmp, narg, arg); }
+// fix etd has two schemes with different state and steps; 'scheme' picks the class
+Fix *create_fix_etd(LAMMPS *lmp, int narg, char **arg)
+{
+  for (int iarg = 3; iarg + 1 < narg; iarg += 2)
+    if (std::string(arg[iarg]) == "scheme") {
+      const std::string scheme = arg[iarg + 1];
+      if (scheme == "implicit") return new FixETDImplicit(lmp, narg, arg);
+      if (scheme != "diagonal")
+        lmp->error->all(FLERR, "Illegal fix etd command: scheme must be diagonal or implicit, got {}", scheme);
+    }
+  return new FixETD(lmp, narg, arg);
+}
 }    // namespace
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)

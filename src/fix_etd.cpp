@@ -51,6 +51,8 @@ FixETD::FixETD(LAMMPS *lmp, int narg, char **arg) :
       if (value == "piecewise") noise = Noise::Piecewise;
       else if (value == "exact") noise = Noise::Exact;
       else error->all(FLERR, "Illegal fix etd command: noise must be piecewise or exact, got {}", value);
+    } else if (key == "scheme") {
+      // 'scheme implicit' is a different class (fix_etd_implicit.cpp); diagonal is this one
     } else if (key == "momentum") {
       if (value == "conserve") conserve_momentum = true;
       else if (value == "none") conserve_momentum = false;

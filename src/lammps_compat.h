@@ -8,6 +8,7 @@
 #define ETD_LAMMPS_COMPAT_H
 
 #include "comm.h"
+#include "fix.h"
 #include "neigh_request.h"
 #include "neighbor.h"
 
@@ -33,6 +34,19 @@ inline void request_half_list(LAMMPS_NS::Neighbor *neighbor, Requestor *requesto
   neighbor->add_request(requestor);
 #else
   neighbor->request(requestor, instance);
+#endif
+}
+
+// A perpetual half neighbor list for a fix (the default newton setting).
+inline void request_fix_half_list(LAMMPS_NS::Neighbor *neighbor, LAMMPS_NS::Fix *fix, int instance)
+{
+#if ETD_LAMMPS_HAS_ADD_REQUEST
+  (void) instance;
+  neighbor->add_request(fix);
+#else
+  const int irequest = neighbor->request(fix, instance);
+  neighbor->requests[irequest]->pair = 0;
+  neighbor->requests[irequest]->fix = 1;
 #endif
 }
 

@@ -11,6 +11,7 @@
 #include "update.h"
 #include "utils.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -30,7 +31,7 @@ bool is_keyword(const char *word)
 PairDPDGen::PairDPDGen(LAMMPS *lmp) :
     Pair(lmp), temperature(0.0), cut_global(0.0), seed(0), a0(nullptr), gamma(nullptr),
     exponent_d(nullptr), exponent_c(nullptr), cut(nullptr), cut_d(nullptr), cut_d_set(nullptr),
-    stride(0), want_friction(false), want_split(false), friction(nullptr), split(nullptr),
+    stride(0), want_friction(false), want_split(false), conservative_only(false), friction(nullptr), split(nullptr),
     nmax_extras(0)
 {
   writedata = 1;
@@ -186,6 +187,16 @@ void PairDPDGen::init_style()
     error->all(FLERR, "Pair style dpd/gen requires atom IDs (its noise is keyed on them)");
   if (update->dt <= 0.0) error->all(FLERR, "Pair style dpd/gen requires a positive timestep");
   etd::compat::request_half_list(neighbor, this, instance_me);
+  // requests from the package's fixes and computes are renewed by their own init(), which
+  // LAMMPS calls after this one: a run without fix etd gets the full DPD force back
+  want_friction = want_split = conservative_only = false;
+}
+
+const etd::PairCoefficients *PairDPDGen::dpd_coefficients(int i, int j)
+{
+  if (i < 1 || j < 1 || i > atom->ntypes || j > atom->ntypes) return nullptr;
+  if (!setflag[std::min(i, j)][std::max(i, j)]) return nullptr;
+  return &coeffs[i * stride + j];
 }
 
 double PairDPDGen::init_one(int i, int j)
@@ -236,17 +247,23 @@ void PairDPDGen::compute(int eflag, int vflag)
   }
 
   // the extras are template flags so that the plain force loop carries none of their work
-  if (evflag) {
-    if (want_split) eval<1, 1, 1>(); else if (want_friction) eval<1, 1, 0>(); else eval<1, 0, 0>();
+  if (conservative_only) {
+    if (evflag) {
+      if (want_split) eval<1, 0, 1, 0>(); else eval<1, 0, 0, 0>();
+    } else {
+      if (want_split) eval<0, 0, 1, 0>(); else eval<0, 0, 0, 0>();
+    }
+  } else if (evflag) {
+    if (want_split) eval<1, 1, 1, 1>(); else if (want_friction) eval<1, 1, 0, 1>(); else eval<1, 0, 0, 1>();
   } else {
-    if (want_split) eval<0, 1, 1>(); else if (want_friction) eval<0, 1, 0>(); else eval<0, 0, 0>();
+    if (want_split) eval<0, 1, 1, 1>(); else if (want_friction) eval<0, 1, 0, 1>(); else eval<0, 0, 0, 1>();
   }
 
   if (extras && force->newton_pair) etd::compat::reverse_comm(comm, this);
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
-template <int EVFLAG, int FRICTION, int SPLIT> void PairDPDGen::eval()
+template <int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE> void PairDPDGen::eval()
 {
   double **x = atom->x;
   double **v = atom->v;
@@ -294,8 +311,9 @@ template <int EVFLAG, int FRICTION, int SPLIT> void PairDPDGen::eval()
 
       const double e_dot_v =
           (delx * (vxi - v[j][0]) + dely * (vyi - v[j][1]) + delz * (vzi - v[j][2])) * rinv;
-      const double theta = (rsq < c.rcsq_d) ? noise.gaussian(tag_i, tag[j], step) : 0.0;
-      const etd::PairForce pf = etd::pair_force(c, rsq, r, e_dot_v, theta, inv_sqrt_dt, factor);
+      const double theta = (DISSIPATIVE && rsq < c.rcsq_d) ? noise.gaussian(tag_i, tag[j], step) : 0.0;
+      etd::PairForce pf = etd::pair_force(c, rsq, r, e_dot_v, theta, inv_sqrt_dt, factor);
+      if (!DISSIPATIVE) pf.dissipative = pf.random = pf.friction = 0.0;
       const double fpair = pf.total() * rinv;
 
       fxi += delx * fpair;

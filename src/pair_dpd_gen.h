@@ -37,6 +37,10 @@ class PairDPDGen : public Pair, public etd::DpdExtrasProvider {
   double **diagonal_friction() override { return friction; }
   double **force_split() override { return split; }
 
+  const etd::PairCoefficients *dpd_coefficients(int i, int j) override;
+  std::uint64_t noise_seed() const override { return static_cast<std::uint64_t>(seed); }
+  void request_conservative_only() override { conservative_only = true; }
+
   const etd::PairCoefficients &coefficients(int i, int j) const { return coeffs[i * stride + j]; }
 
  protected:
@@ -52,13 +56,14 @@ class PairDPDGen : public Pair, public etd::DpdExtrasProvider {
   int stride;
 
   bool want_friction, want_split;
+  bool conservative_only;    // friction and noise left to fix etd's implicit scheme
   double **friction;    // [nmax][3]
   double **split;       // [nmax][9]
   int nmax_extras;
 
   void allocate();
   void grow_extras();
-  template <int EVFLAG, int FRICTION, int SPLIT> void eval();
+  template <int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE> void eval();
 };
 
 }    // namespace LAMMPS_NS

@@ -1,0 +1,443 @@
+// ETD-DPD: fix etd ... scheme implicit.
+//
+// Inertial (default), per step of length h = dt (a BAOAB-type splitting):
+//   v += h/2 F/m;  x += h/2 v;  solve (M + h/2 G) v' = (M - h/2 G) v + sqrt(h) B xi;
+//   x += h/2 v';  [LAMMPS: neighbors, forces F(x)];  v += h/2 F/m
+// F holds every non-dissipative force (the package's pair styles leave out their friction and
+// noise while this scheme runs). Overdamped (m -> 0):
+//   solve G v = F + B xi / sqrt(h);  x += h v
+// G, B and xi are built at the positions where the solve happens, from the fix's own half
+// neighbor list and the pair styles' coefficients; atoms outside the group keep their
+// velocities (walls, a fixed sphere) and enter G with them.
+#include "fix_etd_implicit.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "dpd_kernel.h"
+#include "dpd_style_lookup.h"
+#include "error.h"
+#include "force.h"
+#include "lammps_compat.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "update.h"
+#include "utils.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), overdamped(false), tolerance(1e-6), max_iterations(200), dt(0.0),
+    list(nullptr), any_fixed_partner(false), comm_vector(nullptr), last_iterations(0),
+    last_residual(0.0), iterations_sum(0.0), solves(0)
+{
+  time_integrate = 1;
+  vector_flag = 1;
+  size_vector = 3;
+  extvector = 0;
+  global_freq = 1;
+  comm_forward = 3;
+  comm_reverse = 3;
+
+  int iarg = 3;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (iarg + 2 > narg) error->all(FLERR, "Illegal fix etd command: keyword {} needs a value", key);
+    const std::string value = arg[iarg + 1];
+    if (key == "scheme") {
+      if (value != "implicit")
+        error->all(FLERR, "Illegal fix etd command: scheme must be diagonal or implicit, got {}", value);
+    } else if (key == "overdamped") {
+      if (value == "yes") overdamped = true;
+      else if (value == "no") overdamped = false;
+      else error->all(FLERR, "Illegal fix etd command: overdamped must be yes or no, got {}", value);
+    } else if (key == "tol") {
+      tolerance = utils::numeric(FLERR, value.c_str(), false, lmp);
+      if (!(tolerance > 0.0 && tolerance < 1.0))
+        error->all(FLERR, "Illegal fix etd command: tol must be between 0 and 1, got {}", value);
+    } else if (key == "maxiter") {
+      max_iterations = utils::inumeric(FLERR, value.c_str(), false, lmp);
+      if (max_iterations < 1)
+        error->all(FLERR, "Illegal fix etd command: maxiter must be a positive integer, got {}", value);
+    } else if (key == "order" || key == "noise" || key == "momentum") {
+      error->all(FLERR, "Illegal fix etd command: keyword {} belongs to scheme diagonal; the "
+                 "implicit scheme is exact in temperature and conserves momentum", key);
+    } else {
+      error->all(FLERR, "Illegal fix etd command: unknown keyword {}", key);
+    }
+    iarg += 2;
+  }
+}
+
+int FixETDImplicit::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
+
+void FixETDImplicit::init()
+{
+  dt = update->dt;
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "Fix etd does not support run_style respa");
+  if (atom->tag_enable == 0)
+    error->all(FLERR, "Fix etd scheme implicit requires atom IDs (its noise is keyed on them)");
+  providers = etd::find_dpd_providers(lmp);
+  if (providers.empty())
+    error->all(FLERR, "Fix etd requires pair style dpd/gen or dpd/fpm (alone or in pair "
+               "hybrid/overlay) to supply the friction");
+
+  const int ntypes = atom->ntypes;
+  pair_table.assign((ntypes + 1) * (ntypes + 1), nullptr);
+  for (auto *p : providers) {
+    p->request_conservative_only();
+    for (int i = 1; i <= ntypes; i++)
+      for (int j = 1; j <= ntypes; j++)
+        if (const etd::PairCoefficients *c = p->dpd_coefficients(i, j))
+          pair_table[i * (ntypes + 1) + j] = c;
+  }
+  noise = etd::PairNoise(providers.front()->noise_seed(), etd::NoiseStream::Integrator);
+  etd::compat::request_fix_half_list(neighbor, this, instance_me);
+}
+
+void FixETDImplicit::init_list(int, NeighList *ptr) { list = ptr; }
+
+void FixETDImplicit::reset_dt() { dt = update->dt; }
+
+/* ---------------------------------------------------------------------- */
+
+void FixETDImplicit::kick(double fraction)
+{
+  double **v = atom->v;
+  double **f = atom->f;
+  const int *mask = atom->mask;
+  const int *type = atom->type;
+  const double *rmass = atom->rmass;
+  const double *mass = atom->mass;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mask[i] & groupbit) {
+      const double scale = fraction * dt / (rmass ? rmass[i] : mass[type[i]]);
+      for (int k = 0; k < 3; k++) v[i][k] += scale * f[i][k];
+    }
+}
+
+void FixETDImplicit::drift(double fraction)
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mask[i] & groupbit)
+      for (int k = 0; k < 3; k++) x[i][k] += fraction * dt * v[i][k];
+}
+
+void FixETDImplicit::initial_integrate(int)
+{
+  if (overdamped) {
+    overdamped_step();
+    drift(1.0);
+    return;
+  }
+  kick(0.5);
+  drift(0.5);
+  // ghosts must see the half-drifted positions before the pair geometry is cached
+  comm->forward_comm();
+  friction_noise_step();
+  drift(0.5);
+}
+
+void FixETDImplicit::final_integrate()
+{
+  if (!overdamped) kick(0.5);
+}
+
+/* ---- the pair geometry of this step ---------------------------------------------------- */
+
+void FixETDImplicit::build_pairs()
+{
+  double **x = atom->x;
+  const int *type = atom->type;
+  const int *mask = atom->mask;
+  const tagint *tag = atom->tag;
+  const double *special_lj = force->special_lj;
+  const int ntypes1 = atom->ntypes + 1;
+  const std::int64_t step = update->ntimestep;
+
+  pairs.clear();
+  int fixed_partner = 0;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    const bool i_mobile = mask[i] & groupbit;
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      int j = jlist[jj];
+      const double factor = special_lj[(j >> SBBITS) & 3];
+      j &= NEIGHMASK;
+      if (factor == 0.0) continue;
+      const bool j_mobile = mask[j] & groupbit;
+      if (!i_mobile && !j_mobile) continue;
+      const etd::PairCoefficients *c = pair_table[type[i] * ntypes1 + type[j]];
+      if (!c || c->gamma == 0.0) continue;
+      const double d[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      if (rsq >= c->rcsq_d || rsq == 0.0) continue;
+      const double r = std::sqrt(rsq);
+      const double q = 1.0 - r * c->inv_rc_d;
+      const double w_r = etd::power_of(q, c->random_kind, 0.5 * c->s);
+      etd::FrictionPair p;
+      p.i = i;
+      p.j = j;
+      for (int k = 0; k < 3; k++) p.e[k] = d[k] / r;
+      p.friction = factor * c->gamma * w_r * w_r;
+      p.noise = std::sqrt(factor) * c->sigma * w_r * noise.gaussian(tag[i], tag[j], step);
+      pairs.push_back(p);
+      if (!i_mobile || !j_mobile) fixed_partner = 1;
+    }
+  }
+  int any = 0;
+  MPI_Allreduce(&fixed_partner, &any, 1, MPI_INT, MPI_MAX, world);
+  any_fixed_partner = any;
+}
+
+// gu = G u over owned atoms (u given on owned atoms; ghosts are filled here)
+void FixETDImplicit::apply_friction(const std::vector<double> &u, std::vector<double> &gu)
+{
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  operand.resize(3 * nall);
+  std::copy(u.begin(), u.begin() + 3 * nlocal, operand.begin());
+  comm_vector = &operand;
+  etd::compat::forward_comm(comm, this);
+  const bool newton = force->newton_pair;
+  gu.assign(3 * nall, 0.0);
+  etd::accumulate_friction(pairs, operand.data(), gu.data(),
+                           [=](int j) { return newton || j < nlocal; });
+  if (newton) {
+    comm_vector = &gu;
+    etd::compat::reverse_comm(comm, this);
+  }
+}
+
+/* ---- the solves ------------------------------------------------------------------------ */
+
+// (mass_weight M + friction_weight G) x = rhs over the group's atoms on this rank, atoms
+// outside the group held at zero (their velocities are already in rhs). With 'deflate' the
+// uniform translation (null space of G) is projected out of rhs and of the solution.
+void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double> &solution,
+                           double mass_weight, double friction_weight, bool deflate)
+{
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const int n = 3 * nlocal;
+  const int *mask = atom->mask;
+  const int *type = atom->type;
+  const double *rmass = atom->rmass;
+  const double *mass = atom->mass;
+  const bool newton = force->newton_pair;
+
+  std::vector<double> masses(nlocal), rhs(rhs_in.begin(), rhs_in.begin() + n);
+  for (int i = 0; i < nlocal; i++) masses[i] = rmass ? rmass[i] : mass[type[i]];
+
+  diagonal.assign(3 * nall, 0.0);
+  etd::accumulate_diagonal(pairs, diagonal.data(), [=](int j) { return newton || j < nlocal; });
+  if (newton) {
+    comm_vector = &diagonal;
+    etd::compat::reverse_comm(comm, this);
+  }
+  std::vector<double> inv_diag(n, 0.0);
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int k = 0; k < 3; k++) {
+      const double d = mass_weight * masses[i] + friction_weight * diagonal[3 * i + k];
+      inv_diag[3 * i + k] = (d > 0.0) ? 1.0 / d : 0.0;    // an atom without friction stays at 0
+    }
+  }
+
+  auto global_sum = [this](double value) {
+    double sum = 0.0;
+    MPI_Allreduce(&value, &sum, 1, MPI_DOUBLE, MPI_SUM, world);
+    return sum;
+  };
+  // per-component mean over the group's atoms, removed where the translation is singular
+  double group_count = 0.0;
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) group_count += 1.0;
+  group_count = global_sum(group_count);
+  auto remove_mean = [&](double *vec) {
+    double local[3] = {0.0, 0.0, 0.0}, mean[3];
+    for (int i = 0; i < nlocal; i++)
+      if (mask[i] & groupbit)
+        for (int k = 0; k < 3; k++) local[k] += vec[3 * i + k];
+    MPI_Allreduce(local, mean, 3, MPI_DOUBLE, MPI_SUM, world);
+    for (int i = 0; i < nlocal; i++)
+      if (mask[i] & groupbit)
+        for (int k = 0; k < 3; k++) vec[3 * i + k] -= mean[k] / group_count;
+  };
+  if (deflate && group_count > 0.0) remove_mean(rhs.data());
+
+  std::vector<double> gu;
+  auto apply = [&](const double *u, double *au) {
+    std::vector<double> masked(u, u + n);
+    for (int i = 0; i < nlocal; i++)
+      if (!(mask[i] & groupbit)) masked[3 * i] = masked[3 * i + 1] = masked[3 * i + 2] = 0.0;
+    apply_friction(masked, gu);
+    for (int i = 0; i < nlocal; i++) {
+      const bool mobile = mask[i] & groupbit;
+      for (int k = 0; k < 3; k++)
+        au[3 * i + k] = mobile ? mass_weight * masses[i] * u[3 * i + k] + friction_weight * gu[3 * i + k] : 0.0;
+    }
+    if (deflate) remove_mean(au);
+  };
+
+  // start from the Jacobi solution, which is exact for an isolated pair-free atom
+  solution.assign(n, 0.0);
+  for (int k = 0; k < n; k++) solution[k] = inv_diag[k] * rhs[k];
+  const etd::SolverResult result = etd::conjugate_gradient(
+      n, apply, global_sum, inv_diag.data(), rhs.data(), solution.data(), tolerance, max_iterations);
+  if (deflate) remove_mean(solution.data());
+
+  last_iterations = result.iterations;
+  last_residual = result.relative_residual;
+  iterations_sum += result.iterations;
+  solves++;
+  if (!result.converged && comm->me == 0)
+    error->warning(FLERR, "Fix etd scheme implicit: conjugate gradients stopped after {} "
+                   "iterations at relative residual {:.3g} (tol {:.3g}); raise maxiter or the step",
+                   result.iterations, result.relative_residual, tolerance);
+}
+
+void FixETDImplicit::friction_noise_step()
+{
+  build_pairs();
+  double **v = atom->v;
+  const int *mask = atom->mask;
+  const int *type = atom->type;
+  const double *rmass = atom->rmass;
+  const double *mass = atom->mass;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const bool newton = force->newton_pair;
+  const double h = dt;
+
+  // b = M v - h/2 G (v + v_fixed) + sqrt(h) B xi: the fixed atoms' velocities appear twice,
+  // once from the old and once from the new side of the Pade update
+  std::vector<double> u(3 * nlocal), gu, rhs(3 * nlocal);
+  for (int i = 0; i < nlocal; i++) {
+    const double weight = (mask[i] & groupbit) ? 1.0 : 2.0;
+    for (int k = 0; k < 3; k++) u[3 * i + k] = weight * v[i][k];
+  }
+  apply_friction(u, gu);
+  std::vector<double> impulse(3 * nall, 0.0);
+  etd::accumulate_noise(pairs, std::sqrt(h), impulse.data(), [=](int j) { return newton || j < nlocal; });
+  if (newton) {
+    comm_vector = &impulse;
+    etd::compat::reverse_comm(comm, this);
+  }
+  for (int i = 0; i < nlocal; i++) {
+    const double m = rmass ? rmass[i] : mass[type[i]];
+    for (int k = 0; k < 3; k++)
+      rhs[3 * i + k] = m * v[i][k] - 0.5 * h * gu[3 * i + k] + impulse[3 * i + k];
+  }
+  std::vector<double> solution;
+  solve(rhs, solution, 1.0, 0.5 * h, false);
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit)
+      for (int k = 0; k < 3; k++) v[i][k] = solution[3 * i + k];
+}
+
+void FixETDImplicit::overdamped_step()
+{
+  build_pairs();
+  double **v = atom->v;
+  double **f = atom->f;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const bool newton = force->newton_pair;
+
+  // G v = F + B xi / sqrt(h) - G v_fixed
+  std::vector<double> u(3 * nlocal, 0.0), gu, rhs(3 * nlocal);
+  for (int i = 0; i < nlocal; i++)
+    if (!(mask[i] & groupbit))
+      for (int k = 0; k < 3; k++) u[3 * i + k] = v[i][k];
+  apply_friction(u, gu);
+  std::vector<double> impulse(3 * nall, 0.0);
+  etd::accumulate_noise(pairs, 1.0 / std::sqrt(dt), impulse.data(),
+                        [=](int j) { return newton || j < nlocal; });
+  if (newton) {
+    comm_vector = &impulse;
+    etd::compat::reverse_comm(comm, this);
+  }
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < 3; k++) rhs[3 * i + k] = f[i][k] + impulse[3 * i + k] - gu[3 * i + k];
+  std::vector<double> solution;
+  // without a fixed partner nothing sets the mean velocity: G is singular in the translation,
+  // which is removed (the group's mean velocity is zero)
+  solve(rhs, solution, 0.0, 1.0, !any_fixed_partner);
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit)
+      for (int k = 0; k < 3; k++) v[i][k] = solution[3 * i + k];
+}
+
+/* ---- output and communication ---------------------------------------------------------- */
+
+double FixETDImplicit::compute_vector(int n)
+{
+  if (n == 0) return last_iterations;
+  if (n == 1) return last_residual;
+  return solves ? iterations_sum / solves : 0.0;
+}
+
+int FixETDImplicit::pack_forward_comm(int n, int *list_, double *buf, int, int *)
+{
+  const std::vector<double> &vec = *comm_vector;
+  int m = 0;
+  for (int i = 0; i < n; i++) {
+    const int j = list_[i];
+    buf[m++] = vec[3 * j];
+    buf[m++] = vec[3 * j + 1];
+    buf[m++] = vec[3 * j + 2];
+  }
+  return m;
+}
+
+void FixETDImplicit::unpack_forward_comm(int n, int first, double *buf)
+{
+  std::vector<double> &vec = *comm_vector;
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    vec[3 * i] = buf[m++];
+    vec[3 * i + 1] = buf[m++];
+    vec[3 * i + 2] = buf[m++];
+  }
+}
+
+int FixETDImplicit::pack_reverse_comm(int n, int first, double *buf)
+{
+  const std::vector<double> &vec = *comm_vector;
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    buf[m++] = vec[3 * i];
+    buf[m++] = vec[3 * i + 1];
+    buf[m++] = vec[3 * i + 2];
+  }
+  return m;
+}
+
+void FixETDImplicit::unpack_reverse_comm(int n, int *list_, double *buf)
+{
+  std::vector<double> &vec = *comm_vector;
+  int m = 0;
+  for (int i = 0; i < n; i++) {
+    const int j = list_[i];
+    vec[3 * j] += buf[m++];
+    vec[3 * j + 1] += buf[m++];
+    vec[3 * j + 2] += buf[m++];
+  }
+}
+
+double FixETDImplicit::memory_usage()
+{
+  return sizeof(etd::FrictionPair) * pairs.capacity() +
+      sizeof(double) * (operand.capacity() + product.capacity() + diagonal.capacity());
+}

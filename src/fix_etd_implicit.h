@@ -1,0 +1,70 @@
+// ETD-DPD: fix etd ... scheme implicit: the exponential update with the full pairwise friction
+// operator, solved by conjugate gradients, and its zero-mass limit (see doc/fix_etd.rst).
+#ifndef ETD_FIX_ETD_IMPLICIT_H
+#define ETD_FIX_ETD_IMPLICIT_H
+
+#include "fix.h"
+
+#include "dpd_random.h"
+#include "friction_operator.h"
+
+#include <vector>
+
+namespace etd {
+class DpdExtrasProvider;
+struct PairCoefficients;
+}    // namespace etd
+
+namespace LAMMPS_NS {
+
+class FixETDImplicit : public Fix {
+ public:
+  FixETDImplicit(class LAMMPS *, int, char **);
+  int setmask() override;
+  void init() override;
+  void init_list(int, class NeighList *) override;
+  void initial_integrate(int) override;
+  void final_integrate() override;
+  void reset_dt() override;
+  double compute_vector(int) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+  double memory_usage() override;
+
+ private:
+  bool overdamped;
+  double tolerance;
+  int max_iterations;
+  double dt;
+  class NeighList *list;
+  std::vector<etd::DpdExtrasProvider *> providers;
+  std::vector<const etd::PairCoefficients *> pair_table;    // (ntypes+1)^2, nullptr: no DPD
+  etd::PairNoise noise;
+  std::vector<etd::FrictionPair> pairs;    // this step's geometry
+  bool any_fixed_partner;                  // some pair couples to an atom outside the group
+
+  // per-atom vectors over owned + ghost atoms, 3 values each; comm_vector is the one the
+  // forward/reverse communication moves
+  std::vector<double> operand, product, diagonal;
+  std::vector<double> *comm_vector;
+
+  int last_iterations;
+  double last_residual;
+  double iterations_sum;
+  long solves;
+
+  void kick(double fraction);
+  void drift(double fraction);
+  void build_pairs();
+  void apply_friction(const std::vector<double> &u, std::vector<double> &gu);
+  void friction_noise_step();
+  void overdamped_step();
+  void solve(const std::vector<double> &rhs, std::vector<double> &solution, double mass_weight,
+             double friction_weight, bool deflate);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

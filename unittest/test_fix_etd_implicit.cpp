@@ -1,0 +1,178 @@
+// fix etd scheme implicit: momentum, frozen atoms, the pair styles' conservative-only mode,
+// restart continuity, the zero-mass limit, errors. Temperature at large steps is in
+// test_equilibrium (label physics); rank-count agreement in test_ranks.
+#include "lammps_fixture.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using etdtest::Lammps;
+
+namespace {
+
+const std::string DATA = etdtest::work_file("etd_implicit_config.data");
+
+void fluid(Lammps &l, double mass = 0.01)
+{
+  etdtest::write_random_data(DATA, 500, 5.0, 4321, 1, 1.0);
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + DATA,
+          "mass 1 " + std::to_string(mass), "pair_style dpd/gen 1.0 1.0 555",
+          "pair_coeff 1 1 18.75 4.5 0.5"});
+}
+
+double max_abs_diff(const std::vector<double> &a, const std::vector<double> &b)
+{
+  double worst = 0.0;
+  for (size_t i = 0; i < a.size(); i++) worst = std::max(worst, std::fabs(a[i] - b[i]));
+  return worst;
+}
+
+std::vector<double> total_momentum(Lammps &l, double mass)
+{
+  auto v = l.gather("v");
+  std::vector<double> p(3, 0.0);
+  for (size_t a = 0; a < v.size() / 3; a++)
+    for (int k = 0; k < 3; k++) p[k] += mass * v[3 * a + k];
+  return p;
+}
+
+}    // namespace
+
+// The Pade update conserves momentum up to the solver tolerance; the diagonal scheme does not
+// (test_fix_etd: its drift exceeds 0.01 over the same run).
+TEST(FixEtdImplicit, ConservesMomentumToSolverTolerance)
+{
+  Lammps l;
+  fluid(l);
+  l.cmds({"velocity all zero linear", "timestep 0.003", "fix 1 all etd scheme implicit tol 1e-10",
+          "run 300 post no"});
+  // thermal momentum of one atom: sqrt(m kT) = 0.1, of the box: 2.2; each solve leaves about
+  // 1e-9 (tol 1e-10), a random walk over the 300 steps
+  for (double p : total_momentum(l, 0.01)) EXPECT_LT(std::fabs(p), 2e-7);
+  EXPECT_GT(l.fix_vector("1", 2), 3.0);    // mean CG iterations: the solver did work
+}
+
+TEST(FixEtdImplicit, AtomsOutsideTheGroupKeepTheirVelocitiesAndDragTheFluid)
+{
+  Lammps l;
+  fluid(l);
+  l.cmds({"region wall block INF INF INF INF 0 1", "group wall region wall", "group mobile subtract all wall",
+          "velocity mobile zero linear", "velocity wall set 5.0 0 0", "timestep 0.002",
+          "fix 1 mobile etd scheme implicit"});
+  auto x0 = l.gather("x"), v0 = l.gather("v");
+  l.cmd("run 20 post no");
+  auto x1 = l.gather("x"), v1 = l.gather("v");
+  int frozen = 0;
+  double fluid_momentum = 0.0;
+  for (size_t a = 0; a < x0.size() / 3; a++) {
+    if (x0[3 * a + 2] < 1.0) {
+      frozen++;
+      for (int k = 0; k < 3; k++) {
+        EXPECT_EQ(x1[3 * a + k], x0[3 * a + k]);
+        EXPECT_EQ(v1[3 * a + k], v0[3 * a + k]);
+      }
+    } else {
+      fluid_momentum += 0.01 * v1[3 * a];
+    }
+  }
+  EXPECT_GT(frozen, 50);
+  // the moving wall pulls the fluid along x through the friction (thermal scale about 2)
+  EXPECT_GT(fluid_momentum, 5.0);
+}
+
+// While the implicit scheme runs, dpd/gen computes conservative forces only; after unfix the
+// full DPD force is back.
+TEST(FixEtdImplicit, PairStyleLeavesFrictionAndNoiseToTheFix)
+{
+  Lammps l;
+  fluid(l);
+  l.cmds({"compute split all dpd/split", "timestep 0.002", "fix 1 all etd scheme implicit", "run 0 post no"});
+  auto f = l.gather("f");
+  auto split = l.gather_compute("split", 9);
+  double dissipative_and_random = 0.0, mismatch = 0.0;
+  for (size_t a = 0; a < f.size() / 3; a++)
+    for (int k = 0; k < 3; k++) {
+      dissipative_and_random += std::fabs(split[9 * a + 3 + k]) + std::fabs(split[9 * a + 6 + k]);
+      mismatch = std::max(mismatch, std::fabs(f[3 * a + k] - split[9 * a + k]));
+    }
+  EXPECT_EQ(dissipative_and_random, 0.0);
+  EXPECT_LT(mismatch, 1e-10);
+  l.cmds({"unfix 1", "fix 2 all nve", "run 0 post no"});
+  split = l.gather_compute("split", 9);
+  dissipative_and_random = 0.0;
+  for (size_t a = 0; a < split.size() / 9; a++)
+    for (int k = 3; k < 9; k++) dissipative_and_random += std::fabs(split[9 * a + k]);
+  EXPECT_GT(dissipative_and_random, 1.0);
+}
+
+// The scheme keeps no state besides x and v, and its noise is keyed on the timestep.
+TEST(FixEtdImplicit, RestartContinuesTheTrajectory)
+{
+  const std::string restart = etdtest::work_file("etd_implicit.restart");
+  std::vector<double> v_ref;
+  {
+    Lammps l;
+    fluid(l);
+    l.cmds({"timestep 0.003", "fix 1 all etd scheme implicit tol 1e-12", "run 20 post no",
+            "write_restart " + restart, "run 20 post no"});
+    v_ref = l.gather("v");
+  }
+  Lammps l;
+  l.cmds({"read_restart " + restart, "comm_modify vel yes", "fix 1 all etd scheme implicit tol 1e-12",
+          "run 20 post no"});
+  double scale = 0.0;
+  for (double v : v_ref) scale = std::max(scale, std::fabs(v));
+  EXPECT_LT(max_abs_diff(l.gather("v"), v_ref), 1e-8 * scale);
+}
+
+// Overdamped: in a periodic box without fixed atoms the translation is removed (mean velocity
+// zero) and the atoms move by v dt; the solver reports its iterations.
+TEST(FixEtdImplicit, OverdampedStepHasZeroMeanVelocityAndMoves)
+{
+  Lammps l;
+  fluid(l);
+  l.cmds({"timestep 0.001", "fix 1 all etd scheme implicit overdamped yes tol 1e-10"});
+  auto x0 = l.gather("x");
+  l.cmd("run 3 post no");
+  auto v = l.gather("v");
+  auto x1 = l.gather("x");
+  double mean[3] = {0, 0, 0}, rms = 0.0;
+  const size_t n = v.size() / 3;
+  for (size_t a = 0; a < n; a++)
+    for (int k = 0; k < 3; k++) { mean[k] += v[3 * a + k] / n; rms += v[3 * a + k] * v[3 * a + k] / (3 * n); }
+  for (double m : mean) EXPECT_LT(std::fabs(m), 1e-8 * std::sqrt(rms));
+  EXPECT_GT(max_abs_diff(x1, x0), 1e-4);
+  EXPECT_GT(l.fix_vector("1", 0), 5.0);
+  EXPECT_LT(l.fix_vector("1", 1), 1e-10);
+}
+
+TEST(FixEtdImplicit, BadInputGivesClearErrors)
+{
+  struct Case {
+    std::vector<std::string> commands;
+    std::string expected;
+  };
+  const std::vector<Case> cases = {
+      {{"fix 1 all etd scheme explicit"}, "scheme must be diagonal or implicit"},
+      {{"fix 1 all etd scheme implicit tol 0"}, "tol must be between 0 and 1"},
+      {{"fix 1 all etd scheme implicit tol 2"}, "tol must be between 0 and 1"},
+      {{"fix 1 all etd scheme implicit maxiter 0"}, "maxiter must be a positive integer"},
+      {{"fix 1 all etd scheme implicit overdamped maybe"}, "overdamped must be yes or no"},
+      {{"fix 1 all etd scheme implicit order 2"}, "keyword order belongs to scheme diagonal"},
+      {{"fix 1 all etd scheme implicit tol"}, "keyword tol needs a value"},
+      {{"fix 1 all etd scheme implicit colour red"}, "unknown keyword colour"},
+      {{"fix 1 all etd overdamped yes"}, "unknown keyword overdamped"},
+      {{"pair_style zero 1.0", "pair_coeff * *", "fix 1 all etd scheme implicit", "run 0"},
+       "requires pair style dpd/gen"},
+      {{"fix 1 all etd scheme implicit", "run_style respa 2 2", "run 0"}, "respa"},
+  };
+  for (const auto &c : cases) {
+    Lammps l;
+    fluid(l);
+    const std::string message = l.error_of(c.commands);
+    EXPECT_NE(message.find(c.expected), std::string::npos)
+        << "commands ending '" << c.commands.back() << "' gave: '" << message << "'";
+  }
+}
