@@ -1,0 +1,81 @@
+#!/usr/bin/python3
+"""Time to solution at equal accuracy: for each integrator and mass, the largest time step (of
+a list) at which the equilibrium kBT is within 1 % of its target, and the wall-clock seconds
+per unit of simulated time at that step, all in one go on the same machine.
+
+Usage: bench/time_to_solution.py LMP PLUGIN [--time T] [--out FILE]
+The system is validation/in.temperature_scan (4,000 atoms, n = 4, a = 18.75, gamma = 4.5,
+s = 1/2, kBT = 1). Stock = pair dpd/ext (ws = s/2) + fix nve.
+"""
+import argparse
+import os
+import re
+import subprocess
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCAN = os.path.join(HERE, "..", "validation", "in.temperature_scan")
+
+# (label, pair, integrator, mass, candidate steps from small to large)
+CASES = [
+    ("stock dpd/ext + nve", "stock", "nve", 0.01, [0.0003, 0.0005, 0.0007, 0.0009]),
+    ("dpd/gen + etd (diagonal)", "gen", "etd", 0.01, [0.0003, 0.0005, 0.0007, 0.001]),
+    ("dpd/gen + etd scheme implicit", "gen", "etd scheme implicit", 0.01, [0.002, 0.003, 0.004, 0.005]),
+    ("stock dpd/ext + nve", "stock", "nve", 0.001, [0.00003, 0.00005, 0.00007, 0.0001]),
+    ("dpd/gen + etd (diagonal)", "gen", "etd", 0.001, [0.00005, 0.0001, 0.0002]),
+    ("dpd/gen + etd scheme implicit", "gen", "etd scheme implicit", 0.001, [0.0005, 0.001, 0.0015, 0.002]),
+]
+
+
+def run(lmp, plugin, pair, integrator, mass, dt, time, workdir):
+    log = os.path.join(workdir, "log.lammps")
+    cmd = [lmp, "-in", SCAN, "-var", "plugin", plugin, "-var", "pair", pair, "-var", "integrator",
+           integrator, "-var", "mass", str(mass), "-var", "dt", str(dt), "-var", "time", str(time),
+           "-var", "equil", str(0.25 * time), "-log", log, "-screen", "none"]
+    done = subprocess.run(cmd, cwd=workdir)
+    text = open(log).read() if os.path.exists(log) else ""
+    m = re.search(r"kBT=([0-9.]+)", text)
+    loops = re.findall(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps", text)
+    if done.returncode != 0 or not m or len(loops) < 2:
+        return None, None
+    seconds, steps = float(loops[-1][0]), int(loops[-1][1])
+    return float(m.group(1)), seconds / (steps * dt)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("lmp")
+    parser.add_argument("plugin")
+    parser.add_argument("--time", type=float, default=0.4, help="production time units")
+    parser.add_argument("--out", default=None)
+    args = parser.parse_args()
+    lines = ["| mass | integrator | dt | kBT | s per time unit |", "|---|---|---|---|---|"]
+    best = {}
+    with tempfile.TemporaryDirectory() as workdir:
+        for label, pair, integrator, mass, steps in CASES:
+            for dt in steps:
+                kT, cost = run(args.lmp, args.plugin, pair, integrator, mass, dt, args.time, workdir)
+                shown = "fails" if kT is None else f"{kT:.4f}"
+                lines.append(f"| {mass} | {label} | {dt} | {shown} | {'' if cost is None else f'{cost:.1f}'} |")
+                print(lines[-1], flush=True)
+                if kT is not None and abs(kT - 1.0) <= 0.01:
+                    best[(mass, label)] = (dt, cost)
+    lines += ["", "Largest step within 1 % of kBT = 1 and time to solution against stock:", "",
+              "| mass | integrator | largest dt | s per time unit | speed-up over stock |", "|---|---|---|---|---|"]
+    for mass in sorted({c[3] for c in CASES}, reverse=True):
+        stock = best.get((mass, "stock dpd/ext + nve"))
+        for label in dict.fromkeys(c[0] for c in CASES):
+            if (mass, label) not in best:
+                lines.append(f"| {mass} | {label} | none of the list | | |")
+                continue
+            dt, cost = best[(mass, label)]
+            ratio = f"{stock[1] / cost:.2f}" if stock else "n/a"
+            lines.append(f"| {mass} | {label} | {dt} | {cost:.1f} | {ratio} |")
+    text = "\n".join(lines) + "\n"
+    print(text)
+    if args.out:
+        open(args.out, "w").write(text)
+
+
+if __name__ == "__main__":
+    main()
