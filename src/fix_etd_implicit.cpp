@@ -24,6 +24,7 @@
 #include "update.h"
 #include "utils.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -209,7 +210,8 @@ void FixETDImplicit::apply_friction(const std::vector<double> &u, std::vector<do
   comm_vector = &operand;
   etd::compat::forward_comm(comm, this);
   const bool newton = force->newton_pair;
-  gu.assign(3 * nall, 0.0);
+  gu.resize(3 * nall);
+  std::fill(gu.begin(), gu.end(), 0.0);
   etd::accumulate_friction(pairs, operand.data(), gu.data(),
                            [=](int j) { return newton || j < nlocal; });
   if (newton) {
@@ -275,11 +277,12 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
   };
   if (deflate && group_count > 0.0) remove_mean(rhs.data());
 
-  std::vector<double> gu;
+  std::vector<double> masked(n), gu;
   auto apply = [&](const double *u, double *au) {
-    std::vector<double> masked(u, u + n);
-    for (int i = 0; i < nlocal; i++)
-      if (!(mask[i] & groupbit)) masked[3 * i] = masked[3 * i + 1] = masked[3 * i + 2] = 0.0;
+    for (int i = 0; i < nlocal; i++) {
+      const double keep = (mask[i] & groupbit) ? 1.0 : 0.0;
+      for (int k = 0; k < 3; k++) masked[3 * i + k] = keep * u[3 * i + k];
+    }
     apply_friction(masked, gu);
     for (int i = 0; i < nlocal; i++) {
       const bool mobile = mask[i] & groupbit;
@@ -439,5 +442,5 @@ void FixETDImplicit::unpack_reverse_comm(int n, int *list_, double *buf)
 double FixETDImplicit::memory_usage()
 {
   return sizeof(etd::FrictionPair) * pairs.capacity() +
-      sizeof(double) * (operand.capacity() + product.capacity() + diagonal.capacity());
+      sizeof(double) * (operand.capacity() + diagonal.capacity());
 }

@@ -47,7 +47,7 @@ class FixETDImplicit : public Fix {
 
   // per-atom vectors over owned + ghost atoms, 3 values each; comm_vector is the one the
   // forward/reverse communication moves
-  std::vector<double> operand, product, diagonal;
+  std::vector<double> operand, diagonal;
   std::vector<double> *comm_vector;
 
   int last_iterations;

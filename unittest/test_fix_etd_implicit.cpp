@@ -176,3 +176,58 @@ TEST(FixEtdImplicit, BadInputGivesClearErrors)
         << "commands ending '" << c.commands.back() << "' gave: '" << message << "'";
   }
 }
+
+// Overdamped Couette flow: frozen walls (z < 1 moving at -U, z > 9 at +U; periodic, so the
+// walls also shear against each other across the boundary) drive the fluid between them;
+// without inertia the mean velocity profile is linear at once. 2,000 atoms, 200 steps of 0.002
+// (the overdamped velocity noise falls as 1/sqrt(dt)), 8 bins: the bin means scatter by about
+// 0.15 against U = 5 (collective fluctuations make it more than the atom count suggests).
+TEST(FixEtdImplicit, OverdampedCouetteFlowIsLinear)
+{
+  const std::string data = etdtest::work_file("etd_implicit_couette.data");
+  etdtest::write_random_data(data, 2000, 8.0, 97, 1, 0.0);
+  Lammps l;
+  const double U = 5.0;
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + data,
+          "change_box all z final 0 10 remap", "mass 1 0.01", "pair_style dpd/gen 1.0 1.0 555",
+          "pair_coeff 1 1 18.75 4.5 0.5", "region bottom block INF INF INF INF INF 1.0",
+          "region top block INF INF INF INF 9.0 INF", "group bottom region bottom",
+          "group top region top", "group walls union bottom top", "group fluid subtract all walls",
+          "velocity bottom set -5.0 0 0", "velocity top set 5.0 0 0",
+          "timestep 0.002", "fix 1 fluid etd scheme implicit overdamped yes", "run 20 post no"});
+  const int nbins = 8;
+  std::vector<double> sum(nbins, 0.0), count(nbins, 0.0);
+  for (int sample = 0; sample < 200; sample++) {
+    l.cmd("run 1 post no");
+    auto x = l.gather("x"), v = l.gather("v");
+    for (size_t a = 0; a < x.size() / 3; a++) {
+      const double z = x[3 * a + 2];
+      if (z <= 1.0 || z >= 9.0) continue;
+      const int bin = std::min(nbins - 1, int((z - 1.0) / 8.0 * nbins));
+      sum[bin] += v[3 * a];
+      count[bin] += 1.0;
+    }
+  }
+  // least-squares line through the bin means
+  double sz = 0, su = 0, szz = 0, szu = 0;
+  std::vector<double> zc(nbins), u(nbins);
+  for (int b = 0; b < nbins; b++) {
+    zc[b] = 1.0 + (b + 0.5) * 8.0 / nbins;
+    u[b] = sum[b] / count[b];
+    sz += zc[b]; su += u[b]; szz += zc[b] * zc[b]; szu += zc[b] * u[b];
+  }
+  const double slope = (nbins * szu - sz * su) / (nbins * szz - sz * sz);
+  const double intercept = (su - slope * sz) / nbins;
+  double worst = 0.0;
+  for (int b = 0; b < nbins; b++) {
+    worst = std::max(worst, std::fabs(u[b] - (intercept + slope * zc[b])));
+    if (etdtest::world_rank() == 0) std::printf("  z %.2f u %.3f line %.3f n %.0f\n", zc[b], u[b], intercept + slope * zc[b], count[b]);
+  }
+  if (etdtest::world_rank() == 0)
+    std::printf("overdamped Couette: slope %.3f (walls 2U/8 = %.3f), u(5) = %.3f, worst bin %.3f\n",
+                slope, 2 * U / 8, intercept + 5.0 * slope, worst);
+  EXPECT_GT(slope, 0.5 * 2 * U / 8);            // the walls drive the fluid
+  EXPECT_LT(slope, 1.2 * 2 * U / 8);            // but cannot shear it faster than they move
+  EXPECT_LT(std::fabs(intercept + 5.0 * slope), 0.3);    // antisymmetric about the middle
+  EXPECT_LT(worst, 0.5);                        // linear: no bin off the line by more than noise
+}
