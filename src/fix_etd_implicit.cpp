@@ -33,7 +33,7 @@ using namespace FixConst;
 
 FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), overdamped(false), tolerance(1e-6), max_iterations(200), dt(0.0),
-    list(nullptr), any_fixed_partner(false), comm_vector(nullptr), last_iterations(0),
+    list(nullptr), any_fixed_partner(false), comm_vector(nullptr), comm_width(3), last_iterations(0),
     last_residual(0.0), iterations_sum(0.0), solves(0)
 {
   time_integrate = 1;
@@ -42,7 +42,7 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
   extvector = 0;
   global_freq = 1;
   comm_forward = 3;
-  comm_reverse = 3;
+  comm_reverse = 6;    // 3 per atom, 6 for the preconditioner's blocks
 
   int iarg = 3;
   while (iarg < narg) {
@@ -240,19 +240,22 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
   std::vector<double> masses(nlocal), rhs(rhs_in.begin(), rhs_in.begin() + n);
   for (int i = 0; i < nlocal; i++) masses[i] = rmass ? rmass[i] : mass[type[i]];
 
-  diagonal.assign(3 * nall, 0.0);
-  etd::accumulate_diagonal(pairs, diagonal.data(), [=](int j) { return newton || j < nlocal; });
+  // block-Jacobi preconditioner: each atom's 3x3 block of mass_weight M + friction_weight G
+  diagonal.assign(6 * nall, 0.0);
+  etd::accumulate_blocks(pairs, diagonal.data(), [=](int j) { return newton || j < nlocal; });
   if (newton) {
     comm_vector = &diagonal;
+    comm_width = 6;
     etd::compat::reverse_comm(comm, this);
+    comm_width = 3;
   }
-  std::vector<double> inv_diag(n, 0.0);
+  std::vector<double> inv_diag(n, 0.0), block_inverse(9 * nlocal, 0.0);
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    for (int k = 0; k < 3; k++) {
-      const double d = mass_weight * masses[i] + friction_weight * diagonal[3 * i + k];
-      inv_diag[3 * i + k] = (d > 0.0) ? 1.0 / d : 0.0;    // an atom without friction stays at 0
-    }
+    // an atom without friction (and, overdamped, without mass) is held at 0
+    if (!etd::invert_block(&diagonal[6 * i], mass_weight * masses[i], friction_weight, &block_inverse[9 * i]))
+      continue;
+    for (int k = 0; k < 3; k++) inv_diag[3 * i + k] = block_inverse[9 * i + 4 * k];
   }
 
   auto global_sum = [this](double value) {
@@ -292,11 +295,16 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
     if (deflate) remove_mean(au);
   };
 
-  // start from the Jacobi solution, which is exact for an isolated pair-free atom
+  // start from the block-Jacobi solution
   solution.assign(n, 0.0);
-  for (int k = 0; k < n; k++) solution[k] = inv_diag[k] * rhs[k];
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < 3; k++) {
+      const double *m = &block_inverse[9 * i + 3 * k];
+      solution[3 * i + k] = m[0] * rhs[3 * i] + m[1] * rhs[3 * i + 1] + m[2] * rhs[3 * i + 2];
+    }
   const etd::SolverResult result = etd::conjugate_gradient(
-      n, apply, global_sum, inv_diag.data(), rhs.data(), solution.data(), tolerance, max_iterations);
+      n, apply, global_sum, inv_diag.data(), rhs.data(), solution.data(), tolerance, max_iterations,
+      block_inverse.data());
   if (deflate) remove_mean(solution.data());
 
   last_iterations = result.iterations;
@@ -419,11 +427,8 @@ int FixETDImplicit::pack_reverse_comm(int n, int first, double *buf)
 {
   const std::vector<double> &vec = *comm_vector;
   int m = 0;
-  for (int i = first; i < first + n; i++) {
-    buf[m++] = vec[3 * i];
-    buf[m++] = vec[3 * i + 1];
-    buf[m++] = vec[3 * i + 2];
-  }
+  for (int i = first; i < first + n; i++)
+    for (int k = 0; k < comm_width; k++) buf[m++] = vec[comm_width * i + k];
   return m;
 }
 
@@ -431,12 +436,8 @@ void FixETDImplicit::unpack_reverse_comm(int n, int *list_, double *buf)
 {
   std::vector<double> &vec = *comm_vector;
   int m = 0;
-  for (int i = 0; i < n; i++) {
-    const int j = list_[i];
-    vec[3 * j] += buf[m++];
-    vec[3 * j + 1] += buf[m++];
-    vec[3 * j + 2] += buf[m++];
-  }
+  for (int i = 0; i < n; i++)
+    for (int k = 0; k < comm_width; k++) vec[comm_width * list_[i] + k] += buf[m++];
 }
 
 double FixETDImplicit::memory_usage()

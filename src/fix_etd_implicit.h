@@ -49,6 +49,7 @@ class FixETDImplicit : public Fix {
   // forward/reverse communication moves
   std::vector<double> operand, diagonal;
   std::vector<double> *comm_vector;
+  int comm_width;    // values per atom in the reverse communication (3, or 6 for blocks)
 
   int last_iterations;
   double last_residual;

@@ -82,6 +82,47 @@ inline void accumulate_diagonal(const std::vector<FrictionPair> &pairs, double *
     }
 }
 
+// Per-atom 3x3 diagonal blocks of G, sum_j gamma w_D e e^T (6 values: xx yy zz xy xz yz), for
+// the block-Jacobi preconditioner.
+template <typename UpdateJ>
+inline void accumulate_blocks(const std::vector<FrictionPair> &pairs, double *blocks,
+                              UpdateJ update_j)
+{
+  for (const FrictionPair &p : pairs) {
+    const double g = p.friction;
+    const double b[6] = {g * p.e[0] * p.e[0], g * p.e[1] * p.e[1], g * p.e[2] * p.e[2],
+                         g * p.e[0] * p.e[1], g * p.e[0] * p.e[2], g * p.e[1] * p.e[2]};
+    for (int k = 0; k < 6; k++) blocks[6 * p.i + k] += b[k];
+    if (update_j(p.j))
+      for (int k = 0; k < 6; k++) blocks[6 * p.j + k] += b[k];
+  }
+}
+
+// Inverse of the symmetric 3x3 block (shift I + scale B) into 9 values. A nearly singular
+// block (an atom with one or two partners in the zero-mass limit: no friction across their
+// directions) falls back to the inverse of its diagonal; false if even that is zero.
+inline bool invert_block(const double *block, double shift, double scale, double *inverse)
+{
+  const double a = shift + scale * block[0], d = shift + scale * block[1], f = shift + scale * block[2];
+  const double b = scale * block[3], c = scale * block[4], e = scale * block[5];
+  const double c00 = d * f - e * e, c01 = c * e - b * f, c02 = b * e - c * d;
+  const double det = a * c00 + b * c01 + c * c02;
+  const double trace = a + d + f;
+  if (!(det > 1e-6 * trace * trace * trace / 27.0)) {
+    for (int k = 0; k < 9; k++) inverse[k] = 0.0;
+    const double diag[3] = {a, d, f};
+    bool any = false;
+    for (int k = 0; k < 3; k++)
+      if (diag[k] > 0.0) { inverse[4 * k] = 1.0 / diag[k]; any = true; }
+    return any;
+  }
+  const double inv = 1.0 / det;
+  inverse[0] = c00 * inv; inverse[1] = c01 * inv; inverse[2] = c02 * inv;
+  inverse[3] = c01 * inv; inverse[4] = (a * f - c * c) * inv; inverse[5] = (b * c - a * e) * inv;
+  inverse[6] = c02 * inv; inverse[7] = (b * c - a * e) * inv; inverse[8] = (a * d - b * b) * inv;
+  return true;
+}
+
 struct SolverResult {
   int iterations = 0;
   double relative_residual = 0.0;
@@ -93,11 +134,26 @@ struct SolverResult {
 //   global_sum(value): sum over all ranks
 // x holds the starting guess on entry. Unknowns with inv_diag = 0 are held at their start
 // value (frozen components, atoms without friction in the zero-mass limit).
+// block_inverse (optional, 9 values per atom, n = 3 atoms): block-Jacobi preconditioning, which
+// also couples the components of one atom; inv_diag then only marks the held unknowns.
 template <typename Apply, typename GlobalSum>
 inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
                                        const double *inv_diag, const double *b, double *x,
-                                       double tolerance, int max_iterations)
+                                       double tolerance, int max_iterations,
+                                       const double *block_inverse = nullptr)
 {
+  auto precondition = [&](const std::vector<double> &r, std::vector<double> &z) {
+    if (!block_inverse) {
+      for (int k = 0; k < n; k++) z[k] = inv_diag[k] * r[k];
+      return;
+    }
+    for (int a = 0; a < n / 3; a++) {
+      const double *m = block_inverse + 9 * a;
+      const double *ra = &r[3 * a];
+      for (int k = 0; k < 3; k++)
+        z[3 * a + k] = (inv_diag[3 * a + k] != 0.0) ? m[3 * k] * ra[0] + m[3 * k + 1] * ra[1] + m[3 * k + 2] * ra[2] : 0.0;
+    }
+  };
   std::vector<double> r(n), z(n), p(n), ap(n);
   SolverResult result;
   double bb = 0.0;
@@ -110,9 +166,9 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
   }
   apply(x, ap.data());
   double rz = 0.0, rr = 0.0;
+  for (int k = 0; k < n; k++) r[k] = (inv_diag[k] != 0.0) ? b[k] - ap[k] : 0.0;
+  precondition(r, z);
   for (int k = 0; k < n; k++) {
-    r[k] = (inv_diag[k] != 0.0) ? b[k] - ap[k] : 0.0;
-    z[k] = inv_diag[k] * r[k];
     p[k] = z[k];
     rz += r[k] * z[k];
     rr += r[k] * r[k];
@@ -132,7 +188,9 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
     for (int k = 0; k < n; k++) {
       x[k] += alpha * p[k];
       if (inv_diag[k] != 0.0) r[k] -= alpha * ap[k];
-      z[k] = inv_diag[k] * r[k];
+    }
+    precondition(r, z);
+    for (int k = 0; k < n; k++) {
       rz_new += r[k] * z[k];
       rr += r[k] * r[k];
     }

@@ -213,3 +213,25 @@ TEST(FrictionOperator, ZeroMassLimitMatchesOverdampedSolve)
   EXPECT_LT(differences[1], differences[0] / 50.0);
   EXPECT_LT(differences[1], 0.005);
 }
+
+TEST(FrictionOperator, BlockInverseAndItsSingularFallback)
+{
+  const double block[6] = {2.0, 3.0, 4.0, 0.5, -0.3, 0.2};    // xx yy zz xy xz yz
+  double inverse[9];
+  ASSERT_TRUE(etd::invert_block(block, 0.7, 1.5, inverse));
+  const double full[9] = {0.7 + 3.0, 0.75, -0.45, 0.75, 0.7 + 4.5, 0.3, -0.45, 0.3, 0.7 + 6.0};
+  for (int r = 0; r < 3; r++)
+    for (int c = 0; c < 3; c++) {
+      double product = 0.0;
+      for (int k = 0; k < 3; k++) product += full[3 * r + k] * inverse[3 * k + c];
+      EXPECT_NEAR(product, r == c ? 1.0 : 0.0, 1e-14);
+    }
+  // one partner along x, no mass: rank one, falls back to the diagonal (only x is held)
+  const double rank_one[6] = {4.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  ASSERT_TRUE(etd::invert_block(rank_one, 0.0, 1.0, inverse));
+  EXPECT_DOUBLE_EQ(inverse[0], 0.25);
+  EXPECT_EQ(inverse[4], 0.0);
+  EXPECT_EQ(inverse[8], 0.0);
+  const double nothing[6] = {0, 0, 0, 0, 0, 0};
+  EXPECT_FALSE(etd::invert_block(nothing, 0.0, 1.0, inverse));
+}
