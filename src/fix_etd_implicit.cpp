@@ -165,6 +165,7 @@ void FixETDImplicit::build_pairs()
   const std::int64_t step = update->ntimestep;
 
   pairs.clear();
+  pair_noise.clear();
   int fixed_partner = 0;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
@@ -190,8 +191,8 @@ void FixETDImplicit::build_pairs()
       p.j = j;
       for (int k = 0; k < 3; k++) p.e[k] = d[k] / r;
       p.friction = factor * c->gamma * w_r * w_r;
-      p.noise = std::sqrt(factor) * c->sigma * w_r * noise.gaussian(tag[i], tag[j], step);
       pairs.push_back(p);
+      pair_noise.push_back(std::sqrt(factor) * c->sigma * w_r * noise.gaussian(tag[i], tag[j], step));
       if (!i_mobile || !j_mobile) fixed_partner = 1;
     }
   }
@@ -339,7 +340,7 @@ void FixETDImplicit::friction_noise_step()
   }
   apply_friction(u, gu);
   std::vector<double> impulse(3 * nall, 0.0);
-  etd::accumulate_noise(pairs, std::sqrt(h), impulse.data(), [=](int j) { return newton || j < nlocal; });
+  etd::accumulate_noise(pairs, pair_noise, std::sqrt(h), impulse.data(), [=](int j) { return newton || j < nlocal; });
   if (newton) {
     comm_vector = &impulse;
     etd::compat::reverse_comm(comm, this);
@@ -373,7 +374,7 @@ void FixETDImplicit::overdamped_step()
       for (int k = 0; k < 3; k++) u[3 * i + k] = v[i][k];
   apply_friction(u, gu);
   std::vector<double> impulse(3 * nall, 0.0);
-  etd::accumulate_noise(pairs, 1.0 / std::sqrt(dt), impulse.data(),
+  etd::accumulate_noise(pairs, pair_noise, 1.0 / std::sqrt(dt), impulse.data(),
                         [=](int j) { return newton || j < nlocal; });
   if (newton) {
     comm_vector = &impulse;
@@ -442,6 +443,6 @@ void FixETDImplicit::unpack_reverse_comm(int n, int *list_, double *buf)
 
 double FixETDImplicit::memory_usage()
 {
-  return sizeof(etd::FrictionPair) * pairs.capacity() +
+  return sizeof(etd::FrictionPair) * pairs.capacity() + sizeof(double) * pair_noise.capacity() +
       sizeof(double) * (operand.capacity() + diagonal.capacity());
 }

@@ -43,6 +43,7 @@ class FixETDImplicit : public Fix {
   std::vector<const etd::PairCoefficients *> pair_table;    // (ntypes+1)^2, nullptr: no DPD
   etd::PairNoise noise;
   std::vector<etd::FrictionPair> pairs;    // this step's geometry
+  std::vector<double> pair_noise;          // and each pair's sigma w_R theta
   bool any_fixed_partner;                  // some pair couples to an atom outside the group
 
   // per-atom vectors over owned + ghost atoms, 3 values each; comm_vector is the one the

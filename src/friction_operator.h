@@ -21,8 +21,9 @@ struct FrictionPair {
   int i, j;             // atom indices (local or ghost)
   double e[3];          // unit vector from j to i
   double friction;      // gamma_ij w_D(r_ij) (special-bond factor included)
-  double noise;         // sigma_ij w_R(r_ij) theta_ij (a unit-time impulse amplitude)
 };
+// (each pair's noise sigma_ij w_R theta_ij lives in a parallel array: the solver iterations
+// stream only what G needs, 40 bytes a pair)
 
 // out_i += (G u)_i restricted to the given pairs; out_j gets the opposite (Newton's third law).
 // update_j(j) says whether j's share is kept (false for ghosts of pairs that another rank
@@ -48,14 +49,15 @@ inline void accumulate_friction(const std::vector<FrictionPair> &pairs, const do
   }
 }
 
-// out_i += scale * sum_j noise_ij e_ij (and the opposite on j): the random impulse, which sums
-// to zero over all atoms.
+// out_i += scale * sum_j noise_ij e_ij (and the opposite on j), noise_ij = sigma w_R theta: the
+// random impulse, which sums to zero over all atoms.
 template <typename UpdateJ>
-inline void accumulate_noise(const std::vector<FrictionPair> &pairs, double scale, double *out,
-                             UpdateJ update_j)
+inline void accumulate_noise(const std::vector<FrictionPair> &pairs, const std::vector<double> &noise,
+                             double scale, double *out, UpdateJ update_j)
 {
-  for (const FrictionPair &p : pairs) {
-    const double amount = scale * p.noise;
+  for (size_t n = 0; n < pairs.size(); n++) {
+    const FrictionPair &p = pairs[n];
+    const double amount = scale * noise[n];
     double *oi = out + 3 * p.i;
     oi[0] += amount * p.e[0];
     oi[1] += amount * p.e[1];

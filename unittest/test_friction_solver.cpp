@@ -18,6 +18,7 @@ struct Cluster {
   double box = 3.0, gamma = 4.5, kT = 1.0, s = 0.5;
   std::vector<double> x;
   std::vector<etd::FrictionPair> pairs;
+  std::vector<double> noise_amplitude;    // sigma w_R per pair
 
   Cluster()
   {
@@ -36,18 +37,19 @@ struct Cluster {
         if (rsq >= 1.0) continue;
         const double r = std::sqrt(rsq);
         etd::FrictionPair p{i, j, {d[0] / r, d[1] / r, d[2] / r},
-                            gamma * etd::dissipative_weight(r, 1.0, s),
-                            sigma * etd::random_weight(r, 1.0, s)};
+                            gamma * etd::dissipative_weight(r, 1.0, s)};
         pairs.push_back(p);
+        noise_amplitude.push_back(sigma * etd::random_weight(r, 1.0, s));
       }
   }
 
   // noise amplitudes times fresh unit Gaussians for this step
-  std::vector<etd::FrictionPair> with_noise(long step) const
+  std::vector<double> noise(long step) const
   {
-    etd::PairNoise noise(99, etd::NoiseStream::Integrator);
-    std::vector<etd::FrictionPair> out = pairs;
-    for (auto &p : out) p.noise *= noise.gaussian(p.i + 1, p.j + 1, step);
+    etd::PairNoise generator(99, etd::NoiseStream::Integrator);
+    std::vector<double> out = noise_amplitude;
+    for (size_t n = 0; n < pairs.size(); n++)
+      out[n] *= generator.gaussian(pairs[n].i + 1, pairs[n].j + 1, step);
     return out;
   }
 };
@@ -60,11 +62,12 @@ int pade_step(const Cluster &c, double m, double h, long step, std::vector<doubl
               double tolerance = 1e-10)
 {
   const int n = 3 * c.natoms;
-  const auto pairs = c.with_noise(step);
+  const auto &pairs = c.pairs;
+  const auto noise = c.noise(step);
   std::vector<double> gv(n, 0.0), b(n), diag(n, 0.0), inv_diag(n);
   etd::accumulate_friction(pairs, v.data(), gv.data(), all_local);
   for (int k = 0; k < n; k++) b[k] = m * v[k] - 0.5 * h * gv[k];
-  etd::accumulate_noise(pairs, std::sqrt(h), b.data(), all_local);
+  etd::accumulate_noise(pairs, noise, std::sqrt(h), b.data(), all_local);
   etd::accumulate_diagonal(pairs, diag.data(), all_local);
   for (int k = 0; k < n; k++) inv_diag[k] = 1.0 / (m + 0.5 * h * diag[k]);
   auto apply = [&](const double *u, double *au) {
@@ -173,9 +176,10 @@ TEST(FrictionOperator, ZeroMassLimitMatchesOverdampedSolve)
   Cluster c;
   const int n = 3 * c.natoms;
   const double h = 0.001;
-  const auto pairs = c.with_noise(5);
+  const auto &pairs = c.pairs;
+  const auto noise = c.noise(5);
   std::vector<double> b(n, 0.0), diag(n, 0.0), inv_diag(n), overdamped(n, 0.0);
-  etd::accumulate_noise(pairs, 1.0 / std::sqrt(h), b.data(), all_local);
+  etd::accumulate_noise(pairs, noise, 1.0 / std::sqrt(h), b.data(), all_local);
   etd::accumulate_diagonal(pairs, diag.data(), all_local);
   for (int k = 0; k < n; k++) inv_diag[k] = 1.0 / diag[k];
   auto apply_g = [&](const double *u, double *gu) {
@@ -190,7 +194,7 @@ TEST(FrictionOperator, ZeroMassLimitMatchesOverdampedSolve)
     // half of v' is the overdamped velocity
     std::vector<double> v(n, 0.0);
     std::vector<double> rhs(n, 0.0), x(n, 0.0), id(n);
-    etd::accumulate_noise(pairs, std::sqrt(h), rhs.data(), all_local);
+    etd::accumulate_noise(pairs, noise, std::sqrt(h), rhs.data(), all_local);
     for (int k = 0; k < n; k++) id[k] = 1.0 / (m + 0.5 * h * diag[k]);
     auto apply_a = [&](const double *u, double *au) {
       std::vector<double> gu(n, 0.0);
