@@ -29,7 +29,7 @@ run() {    # mass integrator dt time
 run 0.01 nve 0.0005 "$time_units"
 run 0.01 "etd" 0.0005 "$time_units"
 for dt in 0.001 0.003 0.01; do run 0.01 "etd scheme implicit" "$dt" "$time_units"; done
-run 0.001 nve 0.00005 "$(echo "$time_units / 2" | bc -l)"
+run 0.001 nve 0.00005 "$(awk "BEGIN { print $time_units / 2 }")"
 for dt in 0.0003 0.001 0.003; do run 0.001 "etd scheme implicit" "$dt" "$time_units"; done
 {
   echo "# fix etd scheme implicit: temperature and viscosity against time step"

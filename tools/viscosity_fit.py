@@ -2,8 +2,8 @@
 """Viscosity from a reverse-Poiseuille profile written by validation/in.reverse_poiseuille.
 
 Usage: tools/viscosity_fit.py PROFILE --force G [--box L] [--density N]
-Fits u(z) = A z (L/2 - z) on the lower half and -A (z - L/2)(L - z) on the upper half
-(least squares for the one amplitude A, both halves together) and prints eta = n g / (2 A)
+Fits u(z) = A z (L/2 - z) + c on the lower half and -A (z - L/2)(L - z) + c on the upper half
+(least squares for the amplitude A and a uniform offset c, both halves together) and prints eta = n g / (2 A)
 with a standard error from the scatter of the bins about the fit.
 """
 import argparse
@@ -30,12 +30,17 @@ def read_profile(path):
 
 
 def fit_viscosity(z, u, force, box, density):
+    """Least squares for u = A shape(z) + c: the offset c absorbs the drift of the mean flow
+    (the two halves' forces cancel only on average, and at low mass the mean velocity of the
+    whole fluid wanders noticeably)."""
     half = box / 2
     shape = np.where(z < half, z * (half - z), -(z - half) * (box - z))
-    amplitude = np.dot(shape, u) / np.dot(shape, shape)
-    residual = u - amplitude * shape
-    dof = max(len(z) - 1, 1)
-    amplitude_error = np.sqrt(np.dot(residual, residual) / dof / np.dot(shape, shape))
+    design = np.column_stack([shape, np.ones_like(shape)])
+    coefficients, _, _, _ = np.linalg.lstsq(design, u, rcond=None)
+    residual = u - design @ coefficients
+    dof = max(len(z) - 2, 1)
+    covariance = np.linalg.inv(design.T @ design) * np.dot(residual, residual) / dof
+    amplitude, amplitude_error = coefficients[0], np.sqrt(covariance[0, 0])
     eta = density * force / (2 * amplitude)
     return eta, eta * amplitude_error / abs(amplitude)
 
