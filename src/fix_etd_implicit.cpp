@@ -264,20 +264,20 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
     MPI_Allreduce(&value, &sum, 1, MPI_DOUBLE, MPI_SUM, world);
     return sum;
   };
-  // per-component mean over the group's atoms, removed where the translation is singular
-  double group_count = 0.0;
-  for (int i = 0; i < nlocal; i++)
-    if (mask[i] & groupbit) group_count += 1.0;
-  group_count = global_sum(group_count);
+  // per-component mean over the solved unknowns (not those held at zero), removed where the
+  // translation is singular; held unknowns must stay untouched for CG to stay consistent
+  double active_local[3] = {0.0, 0.0, 0.0}, active_count[3];
+  for (int k = 0; k < n; k++)
+    if (inv_diag[k] != 0.0) active_local[k % 3] += 1.0;
+  MPI_Allreduce(active_local, active_count, 3, MPI_DOUBLE, MPI_SUM, world);
+  const double group_count = active_count[0] + active_count[1] + active_count[2];
   auto remove_mean = [&](double *vec) {
-    double local[3] = {0.0, 0.0, 0.0}, mean[3];
-    for (int i = 0; i < nlocal; i++)
-      if (mask[i] & groupbit)
-        for (int k = 0; k < 3; k++) local[k] += vec[3 * i + k];
-    MPI_Allreduce(local, mean, 3, MPI_DOUBLE, MPI_SUM, world);
-    for (int i = 0; i < nlocal; i++)
-      if (mask[i] & groupbit)
-        for (int k = 0; k < 3; k++) vec[3 * i + k] -= mean[k] / group_count;
+    double local[3] = {0.0, 0.0, 0.0}, sum[3];
+    for (int k = 0; k < n; k++)
+      if (inv_diag[k] != 0.0) local[k % 3] += vec[k];
+    MPI_Allreduce(local, sum, 3, MPI_DOUBLE, MPI_SUM, world);
+    for (int k = 0; k < n; k++)
+      if (inv_diag[k] != 0.0 && active_count[k % 3] > 0.0) vec[k] -= sum[k % 3] / active_count[k % 3];
   };
   if (deflate && group_count > 0.0) remove_mean(rhs.data());
 
@@ -305,13 +305,24 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
     }
   const etd::SolverResult result = etd::conjugate_gradient(
       n, apply, global_sum, inv_diag.data(), rhs.data(), solution.data(), tolerance, max_iterations,
-      block_inverse.data());
+      block_inverse.data(), [&](double *vec) {
+        if (deflate) remove_mean(vec);
+      });
   if (deflate) remove_mean(solution.data());
 
   last_iterations = result.iterations;
   last_residual = result.relative_residual;
   iterations_sum += result.iterations;
   solves++;
+  // without inertia a failed solve means a (nearly) singular G: an atom has lost its DPD
+  // partners in some direction, so its mobility there is unbounded; moving it would throw it
+  // out of the box
+  if (!result.converged && mass_weight == 0.0)
+    error->all(FLERR, "Fix etd overdamped yes: conjugate gradients did not converge ({} iterations, "
+               "relative residual {:.3g}): the friction system is nearly singular (an atom without "
+               "DPD partners in some direction). Use a smaller timestep, a larger dissipative cutoff, "
+               "or the inertial implicit scheme with a small mass",
+               result.iterations, result.relative_residual);
   if (!result.converged && comm->me == 0)
     error->warning(FLERR, "Fix etd scheme implicit: conjugate gradients stopped after {} "
                    "iterations at relative residual {:.3g} (tol {:.3g}); raise maxiter or the step",

@@ -136,13 +136,21 @@ struct SolverResult {
 //   global_sum(value): sum over all ranks
 // x holds the starting guess on entry. Unknowns with inv_diag = 0 are held at their start
 // value (frozen components, atoms without friction in the zero-mass limit).
+struct NoProjection {
+  void operator()(double *) const {}
+};
+
 // block_inverse (optional, 9 values per atom, n = 3 atoms): block-Jacobi preconditioning, which
 // also couples the components of one atom; inv_diag then only marks the held unknowns.
-template <typename Apply, typename GlobalSum>
+// project (optional): removes a null space (the uniform translation of a singular G) from the
+// preconditioned residual, so that every search direction stays in the space where A is
+// positive definite (b and A's output must already lie in it).
+template <typename Apply, typename GlobalSum, typename Project = NoProjection>
 inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
                                        const double *inv_diag, const double *b, double *x,
                                        double tolerance, int max_iterations,
-                                       const double *block_inverse = nullptr)
+                                       const double *block_inverse = nullptr,
+                                       Project project = Project())
 {
   auto precondition = [&](const std::vector<double> &r, std::vector<double> &z) {
     if (!block_inverse) {
@@ -166,10 +174,12 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
     result.converged = true;
     return result;
   }
+  project(x);
   apply(x, ap.data());
   double rz = 0.0, rr = 0.0;
   for (int k = 0; k < n; k++) r[k] = (inv_diag[k] != 0.0) ? b[k] - ap[k] : 0.0;
   precondition(r, z);
+  project(z.data());
   for (int k = 0; k < n; k++) {
     p[k] = z[k];
     rz += r[k] * z[k];
@@ -192,6 +202,7 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
       if (inv_diag[k] != 0.0) r[k] -= alpha * ap[k];
     }
     precondition(r, z);
+    project(z.data());
     for (int k = 0; k < n; k++) {
       rz_new += r[k] * z[k];
       rr += r[k] * r[k];
