@@ -238,7 +238,9 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
   const double *mass = atom->mass;
   const bool newton = force->newton_pair;
 
-  std::vector<double> masses(nlocal), rhs(rhs_in.begin(), rhs_in.begin() + n);
+  std::vector<double> &masses = work.masses, &rhs = work.rhs;
+  masses.resize(nlocal);
+  rhs.assign(rhs_in.begin(), rhs_in.begin() + n);
   for (int i = 0; i < nlocal; i++) masses[i] = rmass ? rmass[i] : mass[type[i]];
 
   // block-Jacobi preconditioner: each atom's 3x3 block of mass_weight M + friction_weight G
@@ -250,7 +252,9 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
     etd::compat::reverse_comm(comm, this);
     comm_width = 3;
   }
-  std::vector<double> inv_diag(n, 0.0), block_inverse(9 * nlocal, 0.0);
+  std::vector<double> &inv_diag = work.inv_diag, &block_inverse = work.block_inverse;
+  inv_diag.assign(n, 0.0);
+  block_inverse.assign(9 * nlocal, 0.0);
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     // an atom without friction (and, overdamped, without mass) is held at 0
@@ -281,7 +285,8 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
   };
   if (deflate && group_count > 0.0) remove_mean(rhs.data());
 
-  std::vector<double> masked(n), gu;
+  std::vector<double> &masked = work.masked, &gu = work.gu;
+  masked.resize(n);
   auto apply = [&](const double *u, double *au) {
     for (int i = 0; i < nlocal; i++) {
       const double keep = (mask[i] & groupbit) ? 1.0 : 0.0;
@@ -307,7 +312,7 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
       n, apply, global_sum, inv_diag.data(), rhs.data(), solution.data(), tolerance, max_iterations,
       block_inverse.data(), [&](double *vec) {
         if (deflate) remove_mean(vec);
-      });
+      }, &work.cg);
   if (deflate) remove_mean(solution.data());
 
   last_iterations = result.iterations;
@@ -344,13 +349,15 @@ void FixETDImplicit::friction_noise_step()
 
   // b = M v - h/2 G (v + v_fixed) + sqrt(h) B xi: the fixed atoms' velocities appear twice,
   // once from the old and once from the new side of the Pade update
-  std::vector<double> u(3 * nlocal), gu, rhs(3 * nlocal);
+  std::vector<double> &u = work.u, &gu = work.gu_rhs, &rhs = work.step_rhs, &impulse = work.impulse;
+  u.resize(3 * nlocal);
+  rhs.resize(3 * nlocal);
   for (int i = 0; i < nlocal; i++) {
     const double weight = (mask[i] & groupbit) ? 1.0 : 2.0;
     for (int k = 0; k < 3; k++) u[3 * i + k] = weight * v[i][k];
   }
   apply_friction(u, gu);
-  std::vector<double> impulse(3 * nall, 0.0);
+  impulse.assign(3 * nall, 0.0);
   etd::accumulate_noise(pairs, pair_noise, std::sqrt(h), impulse.data(), [=](int j) { return newton || j < nlocal; });
   if (newton) {
     comm_vector = &impulse;
@@ -361,7 +368,7 @@ void FixETDImplicit::friction_noise_step()
     for (int k = 0; k < 3; k++)
       rhs[3 * i + k] = m * v[i][k] - 0.5 * h * gu[3 * i + k] + impulse[3 * i + k];
   }
-  std::vector<double> solution;
+  std::vector<double> &solution = work.solution;
   solve(rhs, solution, 1.0, 0.5 * h, false);
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
@@ -379,12 +386,14 @@ void FixETDImplicit::overdamped_step()
   const bool newton = force->newton_pair;
 
   // G v = F + B xi / sqrt(h) - G v_fixed
-  std::vector<double> u(3 * nlocal, 0.0), gu, rhs(3 * nlocal);
+  std::vector<double> &u = work.u, &gu = work.gu_rhs, &rhs = work.step_rhs, &impulse = work.impulse;
+  u.assign(3 * nlocal, 0.0);
+  rhs.resize(3 * nlocal);
   for (int i = 0; i < nlocal; i++)
     if (!(mask[i] & groupbit))
       for (int k = 0; k < 3; k++) u[3 * i + k] = v[i][k];
   apply_friction(u, gu);
-  std::vector<double> impulse(3 * nall, 0.0);
+  impulse.assign(3 * nall, 0.0);
   etd::accumulate_noise(pairs, pair_noise, 1.0 / std::sqrt(dt), impulse.data(),
                         [=](int j) { return newton || j < nlocal; });
   if (newton) {
@@ -393,7 +402,7 @@ void FixETDImplicit::overdamped_step()
   }
   for (int i = 0; i < nlocal; i++)
     for (int k = 0; k < 3; k++) rhs[3 * i + k] = f[i][k] + impulse[3 * i + k] - gu[3 * i + k];
-  std::vector<double> solution;
+  std::vector<double> &solution = work.solution;
   // without a fixed partner nothing sets the mean velocity: G is singular in the translation,
   // which is removed (the group's mean velocity is zero)
   solve(rhs, solution, 0.0, 1.0, !any_fixed_partner);

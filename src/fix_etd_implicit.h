@@ -52,6 +52,13 @@ class FixETDImplicit : public Fix {
   std::vector<double> *comm_vector;
   int comm_width;    // values per atom in the reverse communication (3, or 6 for blocks)
 
+  // work vectors reused from step to step (per-step allocation costs page faults at scale)
+  struct Work {
+    std::vector<double> masses, rhs, inv_diag, block_inverse, masked, gu;    // solve()
+    std::vector<double> u, gu_rhs, step_rhs, impulse, solution;              // the steps
+    etd::CgWorkspace cg;
+  } work;
+
   int last_iterations;
   double last_residual;
   double iterations_sum;

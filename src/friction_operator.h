@@ -19,9 +19,13 @@ namespace etd {
 // streams this compact array instead of the neighbor list.
 struct FrictionPair {
   int i, j;             // atom indices (local or ghost)
-  double e[3];          // unit vector from j to i
-  double friction;      // gamma_ij w_D(r_ij) (special-bond factor included)
+  float e[3];           // unit vector from j to i
+  float friction;       // gamma_ij w_D(r_ij) (special-bond factor included)
 };
+// Single precision halves what every solver iteration streams (24 bytes a pair), which is what
+// limits large systems. Both atoms of a pair use the same rounded numbers, so G stays exactly
+// symmetric and momentum-conserving; it differs from the double-precision operator by about
+// 1e-7 relative, far below the solver tolerance and the statistical error of any average.
 // (each pair's noise sigma_ij w_R theta_ij lives in a parallel array: the solver iterations
 // stream only what G needs, 40 bytes a pair)
 
@@ -140,6 +144,12 @@ struct NoProjection {
   void operator()(double *) const {}
 };
 
+// The solver's vectors, kept by the caller between solves: allocating them afresh every step
+// costs page faults that grow with the system.
+struct CgWorkspace {
+  std::vector<double> r, z, p, ap;
+};
+
 // block_inverse (optional, 9 values per atom, n = 3 atoms): block-Jacobi preconditioning, which
 // also couples the components of one atom; inv_diag then only marks the held unknowns.
 // project (optional): removes a null space (the uniform translation of a singular G) from the
@@ -150,8 +160,16 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
                                        const double *inv_diag, const double *b, double *x,
                                        double tolerance, int max_iterations,
                                        const double *block_inverse = nullptr,
-                                       Project project = Project())
+                                       Project project = Project(),
+                                       CgWorkspace *workspace = nullptr)
 {
+  CgWorkspace local;
+  CgWorkspace &work = workspace ? *workspace : local;
+  work.r.resize(n);
+  work.z.resize(n);
+  work.p.resize(n);
+  work.ap.resize(n);
+  std::vector<double> &r = work.r, &z = work.z, &p = work.p, &ap = work.ap;
   auto precondition = [&](const std::vector<double> &r, std::vector<double> &z) {
     if (!block_inverse) {
       for (int k = 0; k < n; k++) z[k] = inv_diag[k] * r[k];
@@ -164,7 +182,6 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
         z[3 * a + k] = (inv_diag[3 * a + k] != 0.0) ? m[3 * k] * ra[0] + m[3 * k + 1] * ra[1] + m[3 * k + 2] * ra[2] : 0.0;
     }
   };
-  std::vector<double> r(n), z(n), p(n), ap(n);
   SolverResult result;
   double bb = 0.0;
   for (int k = 0; k < n; k++) bb += b[k] * b[k];

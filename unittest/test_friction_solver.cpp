@@ -36,8 +36,8 @@ struct Cluster {
         }
         if (rsq >= 1.0) continue;
         const double r = std::sqrt(rsq);
-        etd::FrictionPair p{i, j, {d[0] / r, d[1] / r, d[2] / r},
-                            gamma * etd::dissipative_weight(r, 1.0, s)};
+        etd::FrictionPair p{i, j, {float(d[0] / r), float(d[1] / r), float(d[2] / r)},
+                            float(gamma * etd::dissipative_weight(r, 1.0, s))};
         pairs.push_back(p);
         noise_amplitude.push_back(sigma * etd::random_weight(r, 1.0, s));
       }
