@@ -1,5 +1,6 @@
 // ETD-DPD: plugin entry point; registers every style of the package with LAMMPS.
 #include "compute_dpd_split.h"
+#include "dpd_design.h"
 #include "fix_etd.h"
 #include "lammpsplugin.h"
 #include "pair_dpd_gen.h"
@@ -14,6 +15,7 @@ Compute *create_compute_dpd_split(LAMMPS *lmp, int narg, char **arg)
   return new ComputeDPDSplit(lmp, narg, arg);
 }
 Fix *create_fix_etd(LAMMPS *lmp, int narg, char **arg) { return new FixETD(lmp, narg, arg); }
+Command *create_dpd_design(LAMMPS *lmp) { return new DPDDesign(lmp); }
 }    // namespace
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
@@ -40,5 +42,11 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "etd";
   plugin.info = "ETD-DPD exponential time differencing integrator for low-mass DPD";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_etd;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "command";
+  plugin.name = "dpd/design";
+  plugin.info = "ETD-DPD DPD parameters s, gamma from a target viscosity and Schmidt number";
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_dpd_design;
   (*register_plugin)(&plugin, lmp);
 }
