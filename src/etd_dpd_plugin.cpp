@@ -1,5 +1,6 @@
 // ETD-DPD: plugin entry point; registers every style of the package with LAMMPS.
 #include "compute_dpd_split.h"
+#include "compute_dpd_tcurrent.h"
 #include "dpd_design.h"
 #include "fix_etd.h"
 #include "lammpsplugin.h"
@@ -13,6 +14,10 @@ Pair *create_pair_dpd_gen(LAMMPS *lmp) { return new PairDPDGen(lmp); }
 Compute *create_compute_dpd_split(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputeDPDSplit(lmp, narg, arg);
+}
+Compute *create_compute_dpd_tcurrent(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputeDPDTCurrent(lmp, narg, arg);
 }
 Fix *create_fix_etd(LAMMPS *lmp, int narg, char **arg) { return new FixETD(lmp, narg, arg); }
 Command *create_dpd_design(LAMMPS *lmp) { return new DPDDesign(lmp); }
@@ -36,6 +41,12 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "dpd/split";
   plugin.info = "ETD-DPD conservative/dissipative/random parts of the DPD pair force";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_dpd_split;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "compute";
+  plugin.name = "dpd/tcurrent";
+  plugin.info = "ETD-DPD transverse current J_perp(k, t) for the TCAF viscosity";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_dpd_tcurrent;
   (*register_plugin)(&plugin, lmp);
 
   plugin.style = "fix";
