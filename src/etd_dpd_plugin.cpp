@@ -1,5 +1,7 @@
 // ETD-DPD: plugin entry point; registers every style of the package with LAMMPS.
 #include "compute_dpd_split.h"
+#include "compute_dpd_tcurrent.h"
+#include "dpd_design.h"
 #include "fix_etd.h"
 #include "fix_etd_implicit.h"
 #include "error.h"
@@ -29,6 +31,11 @@ Fix *create_fix_etd(LAMMPS *lmp, int narg, char **arg)
     }
   return new FixETD(lmp, narg, arg);
 }
+Compute *create_compute_dpd_tcurrent(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputeDPDTCurrent(lmp, narg, arg);
+}
+Command *create_dpd_design(LAMMPS *lmp) { return new DPDDesign(lmp); }
 }    // namespace
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
@@ -51,9 +58,21 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_dpd_split;
   (*register_plugin)(&plugin, lmp);
 
+  plugin.style = "compute";
+  plugin.name = "dpd/tcurrent";
+  plugin.info = "ETD-DPD transverse current J_perp(k, t) for the TCAF viscosity";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_dpd_tcurrent;
+  (*register_plugin)(&plugin, lmp);
+
   plugin.style = "fix";
   plugin.name = "etd";
   plugin.info = "ETD-DPD exponential time differencing integrator for low-mass DPD";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_etd;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "command";
+  plugin.name = "dpd/design";
+  plugin.info = "ETD-DPD DPD parameters s, gamma from a target viscosity and Schmidt number";
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_dpd_design;
   (*register_plugin)(&plugin, lmp);
 }
