@@ -1,6 +1,8 @@
 // ETD-DPD: plugin entry point; registers every style of the package with LAMMPS.
 #include "compute_dpd_split.h"
 #include "fix_etd.h"
+#include "fix_wall_cylinder_bounce.h"
+#include "fix_wall_thermal_layer.h"
 #include "lammpsplugin.h"
 #include "pair_dpd_gen.h"
 #include "version.h"
@@ -14,6 +16,14 @@ Compute *create_compute_dpd_split(LAMMPS *lmp, int narg, char **arg)
   return new ComputeDPDSplit(lmp, narg, arg);
 }
 Fix *create_fix_etd(LAMMPS *lmp, int narg, char **arg) { return new FixETD(lmp, narg, arg); }
+Fix *create_fix_wall_thermal_layer(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixWallThermalLayer(lmp, narg, arg);
+}
+Fix *create_fix_wall_cylinder_bounce(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixWallCylinderBounce(lmp, narg, arg);
+}
 }    // namespace
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
@@ -40,5 +50,17 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "etd";
   plugin.info = "ETD-DPD exponential time differencing integrator for low-mass DPD";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_etd;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "fix";
+  plugin.name = "wall/thermal/layer";
+  plugin.info = "ETD-DPD near-wall layer with velocities redrawn from the wall's Maxwellian";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_wall_thermal_layer;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "fix";
+  plugin.name = "wall/cylinder/bounce";
+  plugin.info = "ETD-DPD bounce-back reflection on a cylinder surface";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_wall_cylinder_bounce;
   (*register_plugin)(&plugin, lmp);
 }
