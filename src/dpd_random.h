@@ -14,8 +14,9 @@
 
 namespace etd {
 
-// Streams keep the users of one seed apart (pair noise, FPM matrix noise, integrator noise).
-enum class NoiseStream : std::uint64_t { PairScalar = 1, PairMatrix = 2, Integrator = 3 };
+// Streams keep the users of one seed apart (pair noise, FPM matrix noise, integrator noise,
+// wall-layer velocities).
+enum class NoiseStream : std::uint64_t { PairScalar = 1, PairMatrix = 2, Integrator = 3, WallLayer = 4 };
 
 class PairNoise {
  public:

@@ -5,6 +5,8 @@
 #include "fix_etd.h"
 #include "fix_etd_implicit.h"
 #include "error.h"
+#include "fix_wall_cylinder_bounce.h"
+#include "fix_wall_thermal_layer.h"
 #include "lammpsplugin.h"
 #include "pair_dpd_gen.h"
 #include "version.h"
@@ -36,6 +38,14 @@ Compute *create_compute_dpd_tcurrent(LAMMPS *lmp, int narg, char **arg)
   return new ComputeDPDTCurrent(lmp, narg, arg);
 }
 Command *create_dpd_design(LAMMPS *lmp) { return new DPDDesign(lmp); }
+Fix *create_fix_wall_thermal_layer(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixWallThermalLayer(lmp, narg, arg);
+}
+Fix *create_fix_wall_cylinder_bounce(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixWallCylinderBounce(lmp, narg, arg);
+}
 }    // namespace
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
@@ -74,5 +84,17 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "dpd/design";
   plugin.info = "ETD-DPD DPD parameters s, gamma from a target viscosity and Schmidt number";
   plugin.creator.v1 = (lammpsplugin_factory1 *) &create_dpd_design;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "fix";
+  plugin.name = "wall/thermal/layer";
+  plugin.info = "ETD-DPD near-wall layer with velocities redrawn from the wall's Maxwellian";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_wall_thermal_layer;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "fix";
+  plugin.name = "wall/cylinder/bounce";
+  plugin.info = "ETD-DPD bounce-back reflection on a cylinder surface";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_wall_cylinder_bounce;
   (*register_plugin)(&plugin, lmp);
 }

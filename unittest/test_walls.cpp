@@ -1,0 +1,254 @@
+// fix wall/cylinder/bounce and fix wall/thermal/layer inside LAMMPS: a hand-built crossing,
+// no escape in a driven run, the redrawn layer's statistics, bad input, rank independence.
+#include "lammps_fixture.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+using etdtest::Lammps;
+
+namespace {
+
+const std::string DATA = etdtest::work_file("walls_config.data");
+
+double max_abs_diff(const std::vector<double> &a, const std::vector<double> &b)
+{
+  double worst = 0.0;
+  for (size_t i = 0; i < a.size(); i++) worst = std::max(worst, std::fabs(a[i] - b[i]));
+  return worst;
+}
+
+// Runs body on the first `ranks` world ranks; returns what it gathered (on world rank 0).
+std::vector<double> on_ranks(int ranks, const std::function<std::vector<double>(Lammps &)> &body)
+{
+  MPI_Comm comm;
+  const int rank = etdtest::world_rank();
+  MPI_Comm_split(MPI_COMM_WORLD, rank < ranks ? 0 : MPI_UNDEFINED, rank, &comm);
+  std::vector<double> result;
+  if (comm != MPI_COMM_NULL) {
+    Lammps l(comm);
+    result = body(l);
+    MPI_Comm_free(&comm);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  return result;
+}
+
+// An empty 10^3 box for hand-built atoms, no forces.
+void empty_box(Lammps &l)
+{
+  l.cmds({"units lj", "atom_modify map array", "boundary p p p", "region box block 0 10 0 10 0 10",
+          "create_box 1 box", "mass 1 1.0", "pair_style zero 1.0", "pair_coeff * *",
+          "timestep 0.01"});
+}
+
+// A low-mass DPD fluid (n = 4, m = 0.01, s = 1/2) filling a cylinder along x.
+void pipe_fluid(Lammps &l, double radius, const std::string &integrator)
+{
+  const std::string R = std::to_string(radius);
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "boundary p p p",
+          "region box block 0 6 -4 4 -4 4", "create_box 1 box",
+          "region pipe cylinder x 0 0 " + R + " INF INF",
+          "create_atoms 1 random " + std::to_string(static_cast<int>(4 * 6 * M_PI * radius * radius)) +
+              " 8123 pipe",
+          "mass 1 0.01", "velocity all create 1.0 4411 mom yes", "pair_style dpd/gen 1.0 1.0 2024",
+          "pair_coeff 1 1 18.75 4.5 0.5", "timestep 0.001", integrator});
+}
+
+}    // namespace
+
+TEST(WallCylinderBounce, HandBuiltCrossingIsReversedAndPutBack)
+{
+  Lammps l;
+  empty_box(l);
+  // axis z through (5, 5), R = 1: atom 1 crosses during the step, atom 2 stays inside
+  l.cmds({"create_atoms 1 single 5.99 5.0 3.0 units box", "create_atoms 1 single 5.0 5.5 3.0 units box",
+          "set atom 1 vx 3.0 vy 0.0 vz 1.0", "set atom 2 vx 1.0 vy 2.0 vz 0.0",
+          "fix 1 all nve", "fix wall all wall/cylinder/bounce z 5.0 5.0 1.0", "run 1 post no"});
+  const auto x = l.gather("x"), v = l.gather("v");
+  // atom 1: wall reached at a third of the step, the other two thirds travelled back
+  EXPECT_NEAR(x[0], 5.98, 1e-12);
+  EXPECT_NEAR(x[1], 5.0, 1e-12);
+  EXPECT_NEAR(x[2], 3.0 + 0.01 - 2.0 * (2.0 / 3.0) * 0.01, 1e-12);
+  EXPECT_DOUBLE_EQ(v[0], -3.0);
+  EXPECT_DOUBLE_EQ(v[1], 0.0);
+  EXPECT_DOUBLE_EQ(v[2], -1.0);
+  // atom 2: moved freely
+  EXPECT_NEAR(x[3], 5.01, 1e-12);
+  EXPECT_NEAR(x[4], 5.52, 1e-12);
+  EXPECT_DOUBLE_EQ(v[3], 1.0);
+  EXPECT_DOUBLE_EQ(v[4], 2.0);
+  EXPECT_EQ(l.fix_vector("wall", 0), 1.0);
+  EXPECT_EQ(l.fix_vector("wall", 1), 0.0);
+}
+
+TEST(WallCylinderBounce, NoAtomLeavesADrivenPipe)
+{
+  Lammps l;
+  pipe_fluid(l, 3.0, "fix integrate all etd");
+  l.cmds({"fix drive all addforce 2.0 0.0 0.0", "fix wall all wall/cylinder/bounce x 0.0 0.0 3.0",
+          "variable r atom sqrt(y*y+z*z)", "compute rmax all reduce max v_r", "thermo_style custom step c_rmax",
+          "thermo 50"});
+  double worst = 0.0;
+  for (int block = 0; block < 30; block++) {    // 1500 steps, checked every 50
+    l.cmd("run 50 post no");
+    worst = std::max(worst, l.compute_scalar("rmax"));
+  }
+  EXPECT_LE(worst, 3.0);
+  EXPECT_GT(l.fix_vector("wall", 0), 100.0);    // the wall did work
+  // the body force builds a flow along the pipe (the wall holds it back)
+  l.cmds({"compute vcm all reduce ave vx", "run 0 post no"});
+  EXPECT_GT(l.compute_scalar("vcm"), 0.5);
+}
+
+TEST(WallCylinderBounce, NoAtomEntersAnObstacle)
+{
+  Lammps l;
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "region box block 0 6 0 6 0 4",
+          "create_box 1 box", "region rod cylinder z 3 3 1.0 INF INF side out",
+          "create_atoms 1 random 540 771 rod", "mass 1 0.01", "velocity all create 1.0 99 mom yes",
+          "pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 18.75 4.5 0.5", "timestep 0.001",
+          "fix integrate all etd", "fix drive all addforce 3.0 0.0 0.0",
+          "fix rod all wall/cylinder/bounce z 3.0 3.0 1.0 side out",
+          "variable r atom sqrt((x-3)^2+(y-3)^2)", "compute rmin all reduce min v_r"});
+  double closest = 10.0;
+  for (int block = 0; block < 20; block++) {
+    l.cmd("run 50 post no");
+    closest = std::min(closest, l.compute_scalar("rmin"));
+  }
+  EXPECT_GE(closest, 1.0);
+  EXPECT_GT(l.fix_vector("rod", 0), 10.0);
+}
+
+TEST(WallThermalLayer, LayerGetsTheWallMaxwellianAndTheRestIsUntouched)
+{
+  Lammps l;
+  l.cmds({"units lj", "atom_modify map array", "region box block 0 10 0 10 0 10", "create_box 1 box",
+          "create_atoms 1 random 40000 17 NULL", "mass 1 0.25", "velocity all set 1.0 -2.0 0.5",
+          "pair_style zero 1.0", "pair_coeff * *", "timestep 0.001",
+          "fix layer all wall/thermal/layer 4321 zlo 1.0 2.0 0.5 3.0 -1.0 0.0 zhi 9.0 1.0 2.0 0.0 0.0 0.0",
+          "run 1 post no"});
+  const auto x = l.gather("x"), v = l.gather("v");
+  double sum[2][3] = {{0}}, sum2[2][3] = {{0}};
+  int n[2] = {0, 0};
+  for (size_t i = 0; i < x.size() / 3; i++) {
+    const double z = x[3 * i + 2];
+    const int face = (z >= 1.0 && z < 3.0) ? 0 : (z > 8.0 && z <= 9.0) ? 1 : -1;
+    if (face < 0) {    // outside both layers: as set
+      EXPECT_EQ(v[3 * i], 1.0);
+      EXPECT_EQ(v[3 * i + 1], -2.0);
+      EXPECT_EQ(v[3 * i + 2], 0.5);
+      continue;
+    }
+    n[face]++;
+    for (int k = 0; k < 3; k++) {
+      sum[face][k] += v[3 * i + k];
+      sum2[face][k] += v[3 * i + k] * v[3 * i + k];
+    }
+  }
+  ASSERT_GT(n[0], 7000);
+  ASSERT_GT(n[1], 3500);
+  const double wall_v[2][3] = {{3.0, -1.0, 0.0}, {0.0, 0.0, 0.0}};
+  const double kT_over_m[2] = {0.5 / 0.25, 2.0 / 0.25};
+  EXPECT_EQ(l.fix_vector("layer", 0), n[0] + n[1]);
+  for (int f = 0; f < 2; f++)
+    for (int k = 0; k < 3; k++) {
+      const double mean = sum[f][k] / n[f];
+      const double var = sum2[f][k] / n[f] - mean * mean;
+      // 5 standard errors
+      EXPECT_NEAR(mean, wall_v[f][k], 5.0 * std::sqrt(kT_over_m[f] / n[f])) << "face " << f << " k " << k;
+      EXPECT_NEAR(var / kT_over_m[f], 1.0, 5.0 * std::sqrt(2.0 / n[f])) << "face " << f << " k " << k;
+    }
+}
+
+TEST(WallThermalLayer, DrawsDependOnSeedAndStep)
+{
+  auto layer_velocities = [](const std::string &seed, int steps) {
+    Lammps l;
+    l.cmds({"units lj", "atom_modify map array", "region box block 0 4 0 4 0 4", "create_box 1 box",
+            "create_atoms 1 random 200 5 NULL", "mass 1 1.0", "pair_style zero 1.0", "pair_coeff * *",
+            "fix layer all wall/thermal/layer " + seed + " zlo 0.0 4.0 1.0 0.0 0.0 0.0",
+            "run " + std::to_string(steps) + " post no"});
+    return l.gather("v");
+  };
+  const auto a = layer_velocities("11", 1), b = layer_velocities("11", 1);
+  const auto c = layer_velocities("12", 1), d = layer_velocities("11", 2);
+  EXPECT_EQ(max_abs_diff(a, b), 0.0);
+  EXPECT_GT(max_abs_diff(a, c), 0.1);
+  EXPECT_GT(max_abs_diff(a, d), 0.1);
+}
+
+TEST(Walls, BadInputIsAnError)
+{
+  struct Case {
+    std::vector<std::string> commands;
+    std::string expected;
+  };
+  const std::vector<Case> cases = {
+      {{"fix w all wall/cylinder/bounce z 5 5"}, "expected dim c1 c2 radius"},
+      {{"fix w all wall/cylinder/bounce q 5 5 1"}, "dim must be x, y or z, got q"},
+      {{"fix w all wall/cylinder/bounce z 5 5 0"}, "radius must be > 0"},
+      {{"fix w all wall/cylinder/bounce z 5 5 -1"}, "radius must be > 0"},
+      {{"fix w all wall/cylinder/bounce z 5 5 1 side across"}, "side must be in or out, got across"},
+      {{"fix w all wall/cylinder/bounce z 5 5 1 side"}, "side needs in or out"},
+      {{"fix w all wall/cylinder/bounce z 5 5 1 speed 2"}, "unknown keyword speed"},
+      {{"fix w all wall/cylinder/bounce z 5 5 6", "run 0"}, "does not fit in the periodic box"},
+      {{"fix w all wall/cylinder/bounce z 5 5 1", "run_style respa 2 2", "run 0"}, "respa"},
+      {{"fix w all wall/thermal/layer 5 zlo 0 1 1 0 0"}, "expected seed and at least one face"},
+      {{"fix w all wall/thermal/layer 0 zlo 0 1 1 0 0 0"}, "seed must be > 0"},
+      {{"fix w all wall/thermal/layer 5 zmid 0 1 1 0 0 0"}, "unknown face zmid"},
+      {{"fix w all wall/thermal/layer 5 zlo 0 0 1 0 0 0"}, "thickness of face zlo must be > 0"},
+      {{"fix w all wall/thermal/layer 5 zhi 0 1 -1 0 0 0"}, "kT of face zhi must be >= 0"},
+      {{"fix w all wall/thermal/layer 5 zlo 0 1 1 0 0 2"}, "velocity of face zlo must lie in the wall plane"},
+      {{"fix w all wall/thermal/layer 5 xlo 0 1 1 0 1 0 xlo 2 1 1 0 0 0"}, "face xlo given twice"},
+      {{"fix w all wall/thermal/layer 5 xlo 0 1 1 0 1 0 yhi 2 1 1"}, "face yhi needs position thickness"},
+  };
+  for (const auto &c : cases) {
+    Lammps l;
+    empty_box(l);
+    const std::string message = l.error_of(c.commands);
+    EXPECT_NE(message.find(c.expected), std::string::npos)
+        << "commands ending '" << c.commands.back() << "' gave: '" << message << "'";
+  }
+}
+
+TEST(Walls, ThermalLayerNeedsAtomIds)
+{
+  Lammps l;
+  l.cmds({"units lj", "atom_modify id no", "region box block 0 4 0 4 0 4", "create_box 1 box",
+          "create_atoms 1 single 1 1 1", "mass 1 1.0", "pair_style zero 1.0", "pair_coeff * *",
+          "fix w all wall/thermal/layer 5 zlo 0 1 1 0 0 0"});
+  EXPECT_NE(l.error_of("run 0").find("requires atom IDs"), std::string::npos);
+}
+
+TEST(Walls, TrajectoriesAgreeAcrossRankCounts)
+{
+  if (etdtest::world_size() < 4) GTEST_SKIP() << "needs mpirun -np 4";
+  etdtest::write_random_data(DATA, 1500, 7.2, 4242, 1, 1.0);
+  std::vector<std::vector<double>> results;
+  for (int ranks : {1, 2, 4})
+    results.push_back(on_ranks(ranks, [&](Lammps &l) {
+      l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + DATA,
+              "mass 1 0.01", "timestep 0.001", "pair_style dpd/gen 1.0 1.0 2718",
+              "pair_coeff 1 1 18.75 4.5 0.5", "fix 1 all etd",
+              "fix layer all wall/thermal/layer 77 zlo 1.0 0.8 1.0 2.0 0.0 0.0 zhi 6.2 0.8 1.0 -2.0 0.0 0.0",
+              "fix rod all wall/cylinder/bounce x 3.6 3.6 1.0 side out", "run 20 post no"});
+      auto x = l.gather("x");
+      auto v = l.gather("v");
+      x.insert(x.end(), v.begin(), v.end());
+      x.push_back(l.fix_vector("rod", 0));
+      x.push_back(l.fix_vector("layer", 0));
+      return x;
+    }));
+  if (etdtest::world_rank() != 0) return;
+  double scale = 0.0;
+  for (double v : results[0]) scale = std::max(scale, std::fabs(v));
+  for (int k = 1; k < 3; k++) {
+    const double diff = max_abs_diff(results[k], results[0]);
+    EXPECT_LT(diff, 1e-10 * scale) << "variant " << k << " diff " << diff;
+  }
+  EXPECT_GT(results[0][results[0].size() - 1], 0.0);    // the layer was active
+  EXPECT_GT(results[0][results[0].size() - 2], 0.0);    // atoms were bounced off the rod
+}
