@@ -8,6 +8,7 @@
 #include "fix_wall_cylinder_bounce.h"
 #include "fix_wall_thermal_layer.h"
 #include "lammpsplugin.h"
+#include "pair_dpd_fpm.h"
 #include "pair_dpd_gen.h"
 #include "version.h"
 
@@ -17,6 +18,7 @@ using namespace LAMMPS_NS;
 
 namespace {
 Pair *create_pair_dpd_gen(LAMMPS *lmp) { return new PairDPDGen(lmp); }
+Pair *create_pair_dpd_fpm(LAMMPS *lmp) { return new PairDPDFPM(lmp); }
 Compute *create_compute_dpd_split(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputeDPDSplit(lmp, narg, arg);
@@ -60,6 +62,11 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "dpd/gen";
   plugin.info = "ETD-DPD generalised DPD: exponent s, separate conservative/dissipative cutoffs";
   plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair_dpd_gen;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "dpd/fpm";
+  plugin.info = "ETD-DPD FPM-style DPD: central and shear drag, angular velocities and torques";
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair_dpd_fpm;
   (*register_plugin)(&plugin, lmp);
 
   plugin.style = "compute";

@@ -119,6 +119,7 @@ void FixETD::final_integrate()
   const double *rmass = atom->rmass;
   const double *mass = atom->mass;
   const int nlocal = atom->nlocal;
+  update_angular_velocities();
 
   // the random force is needed apart whenever it is not simply part of A_n: for the exact
   // (Ornstein-Uhlenbeck) noise, and for order 2, whose extrapolation of A must not extrapolate
@@ -171,6 +172,44 @@ void FixETD::final_integrate()
 }
 
 double FixETD::compute_vector(int n) { return momentum_correction[n]; }
+
+/* ----------------------------------------------------------------------
+   Angular velocities, where a pair style supplies the rotational friction diagonal (dpd/fpm):
+   per component, with Gamma_rot from the pair style and the moment of inertia of a solid
+   sphere I = 0.4 m r^2 (as fix nve/sphere),
+     Omega' = e^z Omega + dt phi1(z) (T + Gamma_rot Omega) / I,   z = -Gamma_rot dt / I.
+   The first-order formula is used for every 'order' setting (there is no torque history).
+------------------------------------------------------------------------- */
+
+void FixETD::update_angular_velocities()
+{
+  if (!atom->omega_flag || !atom->torque_flag) return;
+  std::vector<double **> rotational;
+  for (auto *p : providers)
+    if (double **g = p->rotational_friction()) rotational.push_back(g);
+  if (rotational.empty()) return;
+  if (!atom->radius_flag || !atom->rmass_flag)
+    error->one(FLERR, "Fix etd: rotating atoms need a radius and per-atom mass for their moment of "
+               "inertia (atom_style sphere)");
+  double **omega = atom->omega;
+  double **torque = atom->torque;
+  const double *radius = atom->radius;
+  const double *rmass = atom->rmass;
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double inertia = 0.4 * rmass[i] * radius[i] * radius[i];
+    if (inertia <= 0.0)
+      error->one(FLERR, "Fix etd: atom {} has zero moment of inertia; give it a diameter (set "
+                 "... diameter) and a mass", atom->tag[i]);
+    for (int k = 0; k < 3; k++) {
+      double friction = 0.0;
+      for (double **g : rotational) friction += g[i][k];
+      const etd::EtdCoefficients c = etd::etd_coefficients(friction / inertia, dt, 1);
+      omega[i][k] = c.decay * omega[i][k] + c.current * (torque[i][k] + friction * omega[i][k]) / inertia;
+    }
+  }
+}
 
 /* ---- per-atom state: A_(n-1) migrates with atoms and is written to restart files ---- */
 

@@ -1,0 +1,153 @@
+// ETD-DPD: the FPM-style pair kernel of pair_style dpd/fpm as pure functions (Pan, Pivkin and
+// Karniadakis, "Single-particle hydrodynamics in DPD: A new formulation", EPL 84, 10012 (2008)).
+//
+// With e = r_ij / r, w = (1 - r/rc)^s (dissipative weight; the paper's f^2) and
+// u_ij = v_ij + (r_ij/2) x (Omega_i + Omega_j), the relative velocity of the two particles'
+// surfaces at the mid-point between them:
+//
+//   F_ij = a (1 - r/rc) e                                             conservative
+//        - gamma_C w (e . v_ij) e - gamma_S w [u_ij - (e . u_ij) e]      dissipative
+//        + sqrt(w) [sigma_C theta_C e + sigma_S theta_A x e] / sqrt(dt)  random
+//   T_i = T_j = -(r_ij / 2) x F_ij,   sigma_X^2 = 2 kBT gamma_X
+//
+// e . (r_ij x Omega) = 0, so the shear term is the paper's translational shear force plus its
+// rotational force -gamma_S w (r_ij/2) x (Omega_i + Omega_j). The paper's random matrix enters
+// only through tr(dW)/sqrt(3) and sqrt(2) dW^A . e; these are four independent unit Gaussians
+// (theta_C and the three entries of theta_A, with sqrt(2) dW^A . e = theta_A x e up to the sign
+// convention of the entries), so they are drawn directly.
+//
+// The friction acting on (v_i, Omega_i, v_j, Omega_j) is K^T Gamma K with Gamma = w [gamma_C e e +
+// gamma_S (1 - e e)] and u_ij = K q; the random force acts through the same K^T and has covariance
+// 2 kBT Gamma, so fluctuation-dissipation holds for translation and rotation together.
+#ifndef ETD_FPM_KERNEL_H
+#define ETD_FPM_KERNEL_H
+
+#include "dpd_kernel.h"
+
+#include <cmath>
+
+namespace etd {
+
+struct FpmCoefficients {
+  double a = 0.0;          // conservative amplitude
+  double gamma_c = 0.0;    // central friction
+  double gamma_s = 0.0;    // shear friction
+  double sigma_c = 0.0;    // sqrt(2 kBT gamma_C)
+  double sigma_s = 0.0;    // sqrt(2 kBT gamma_S)
+  double s = 2.0;          // dissipative exponent
+  double rc = 1.0;
+  double inv_rc = 1.0;
+  double rcsq = 1.0;
+  PowerKind dissipative_kind = PowerKind::Two;    // w = q^s
+  PowerKind random_kind = PowerKind::One;         // sqrt(w) = q^(s/2)
+
+  void set(double a_, double gamma_c_, double gamma_s_, double s_, double rc_, double kT)
+  {
+    a = a_; gamma_c = gamma_c_; gamma_s = gamma_s_; s = s_; rc = rc_;
+    sigma_c = noise_amplitude(gamma_c, kT);
+    sigma_s = noise_amplitude(gamma_s, kT);
+    inv_rc = 1.0 / rc;
+    rcsq = rc * rc;
+    dissipative_kind = classify_power(s);
+    random_kind = classify_power(0.5 * s);
+  }
+};
+
+// The four unit Gaussians of one pair (theta_ij = theta_ji).
+struct FpmNoise {
+  double central = 0.0;             // theta_C = tr(dW) / sqrt(3 dt)
+  double shear[3] = {0.0, 0.0, 0.0};    // theta_A: sqrt(2) dW^A as an axial vector / sqrt(dt)
+};
+
+// Force on i from j (the force on j is its negative), split into parts, and the torque that
+// the pair puts on each of i and j (the same vector for both).
+struct FpmPairResult {
+  double conservative[3] = {0.0, 0.0, 0.0};
+  double dissipative[3] = {0.0, 0.0, 0.0};    // central + shear, including the rotational drag
+  double random[3] = {0.0, 0.0, 0.0};
+  double torque[3] = {0.0, 0.0, 0.0};
+  double central_friction = 0.0;    // gamma_C w (times the special factor)
+  double shear_friction = 0.0;      // gamma_S w (times the special factor)
+  double force(int k) const { return conservative[k] + dissipative[k] + random[k]; }
+};
+
+inline void cross(const double a[3], const double b[3], double out[3])
+{
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// del = r_i - r_j (r = |del| > 0, inside rc), v_ij = v_i - v_j, omega_sum = Omega_i + Omega_j.
+// special: special-bond factor (conservative and dissipative scale by it, random by its root).
+inline FpmPairResult fpm_pair(const FpmCoefficients &c, const double del[3], double r,
+                              const double v_ij[3], const double omega_sum[3],
+                              const FpmNoise &noise, double inv_sqrt_dt, double special = 1.0)
+{
+  FpmPairResult out;
+  if (r >= c.rc) return out;
+  const double rinv = 1.0 / r;
+  const double e[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
+  const double q = 1.0 - r * c.inv_rc;
+  const double w_r = power_of(q, c.random_kind, 0.5 * c.s);
+  const double w = (c.dissipative_kind == PowerKind::Two) ? q * q : w_r * w_r;
+  out.central_friction = special * c.gamma_c * w;
+  out.shear_friction = special * c.gamma_s * w;
+
+  // slip velocity at the mid-point; its rotational part is perpendicular to e
+  const double half_del[3] = {0.5 * del[0], 0.5 * del[1], 0.5 * del[2]};
+  double spin_slip[3];
+  cross(half_del, omega_sum, spin_slip);
+  const double e_dot_v = e[0] * v_ij[0] + e[1] * v_ij[1] + e[2] * v_ij[2];
+  double shear_dir[3];
+  cross(noise.shear, e, shear_dir);
+
+  const double fc = special * c.a * q;
+  const double random_amp = std::sqrt(special) * w_r * inv_sqrt_dt;
+  const double central_random = random_amp * c.sigma_c * noise.central;
+  const double shear_random = random_amp * c.sigma_s;
+  double shear_force[3];    // the non-central part: the only one that makes a torque
+  for (int k = 0; k < 3; k++) {
+    const double v_perp = v_ij[k] - e_dot_v * e[k];
+    const double shear_dissipative = -out.shear_friction * (v_perp + spin_slip[k]);
+    const double shear_noise = shear_random * shear_dir[k];
+    out.conservative[k] = fc * e[k];
+    out.dissipative[k] = -out.central_friction * e_dot_v * e[k] + shear_dissipative;
+    out.random[k] = central_random * e[k] + shear_noise;
+    shear_force[k] = shear_dissipative + shear_noise;
+  }
+  // T = -(r_ij/2) x F_ij; the central parts are parallel to r_ij and drop out exactly
+  double t[3];
+  cross(half_del, shear_force, t);
+  for (int k = 0; k < 3; k++) out.torque[k] = -t[k];
+  return out;
+}
+
+// Conservative energy a rc / 2 (1 - r/rc)^2, zero at rc.
+inline double fpm_energy(const FpmCoefficients &c, double r, double special = 1.0)
+{
+  if (r >= c.rc) return 0.0;
+  const double q = 1.0 - r * c.inv_rc;
+  return special * 0.5 * c.a * c.rc * q * q;
+}
+
+// Diagonal of the friction that one pair puts on atom i (and on j: the same values).
+// Translational: d F_i / d v_i = -w [gamma_C e e + gamma_S (1 - e e)], whose diagonal is
+//   w [gamma_C e_a^2 + gamma_S (1 - e_a^2)].
+// Rotational: d T_i / d Omega_i = -gamma_S w (r^2/4) (1 - e e), diagonal gamma_S w (r^2/4)(1 - e_a^2).
+inline void fpm_translational_friction(double central_friction, double shear_friction,
+                                       const double e[3], double out[3])
+{
+  for (int k = 0; k < 3; k++)
+    out[k] = central_friction * e[k] * e[k] + shear_friction * (1.0 - e[k] * e[k]);
+}
+
+inline void fpm_rotational_friction(double shear_friction, double rsq, const double e[3],
+                                    double out[3])
+{
+  for (int k = 0; k < 3; k++) out[k] = shear_friction * 0.25 * rsq * (1.0 - e[k] * e[k]);
+}
+
+}    // namespace etd
+
+#endif

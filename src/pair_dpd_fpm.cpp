@@ -1,0 +1,461 @@
+// ETD-DPD: pair_style dpd/fpm. Thin LAMMPS adapter over fpm_kernel.h and dpd_random.h.
+#include "pair_dpd_fpm.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "lammps_compat.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "update.h"
+#include "utils.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+namespace {
+constexpr double EPSILON = 1.0e-10;    // coincident atoms (possible in DPD) get no force
+constexpr int FRICTION_VALUES = 3;
+constexpr int SPLIT_VALUES = 9;
+constexpr int NCOEFF = 5;    // a, gamma_C, gamma_S, s, cutoff
+}    // namespace
+
+PairDPDFPM::PairDPDFPM(LAMMPS *lmp) :
+    Pair(lmp), temperature(0.0), cut_global(0.0), seed(0), a0(nullptr), gamma_c(nullptr),
+    gamma_s(nullptr), exponent_d(nullptr), cut(nullptr), stride(0), want_friction(false),
+    want_split(false), friction(nullptr), rot_friction(nullptr), split(nullptr), nmax_extras(0)
+{
+  writedata = 1;
+  restartinfo = 1;
+  comm_reverse = 2 * FRICTION_VALUES + SPLIT_VALUES;
+}
+
+PairDPDFPM::~PairDPDFPM()
+{
+  if (copymode) return;
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    memory->destroy(a0);
+    memory->destroy(gamma_c);
+    memory->destroy(gamma_s);
+    memory->destroy(exponent_d);
+    memory->destroy(cut);
+  }
+  memory->destroy(friction);
+  memory->destroy(rot_friction);
+  memory->destroy(split);
+}
+
+void PairDPDFPM::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  memory->create(a0, n + 1, n + 1, "pair:a0");
+  memory->create(gamma_c, n + 1, n + 1, "pair:gamma_c");
+  memory->create(gamma_s, n + 1, n + 1, "pair:gamma_s");
+  memory->create(exponent_d, n + 1, n + 1, "pair:exponent_d");
+  memory->create(cut, n + 1, n + 1, "pair:cut");
+  for (int i = 0; i <= n; i++)
+    for (int j = 0; j <= n; j++) {
+      setflag[i][j] = 0;
+      a0[i][j] = gamma_c[i][j] = gamma_s[i][j] = 0.0;
+      exponent_d[i][j] = 2.0;
+      cut[i][j] = 0.0;
+    }
+  stride = n + 1;
+  coeffs.assign(static_cast<size_t>(stride) * stride, etd::FpmCoefficients());
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairDPDFPM::settings(int narg, char **arg)
+{
+  if (narg != 3)
+    error->all(FLERR, "Illegal pair_style dpd/fpm command: expected 3 arguments (T cutoff seed), got {}",
+               narg);
+  temperature = utils::numeric(FLERR, arg[0], false, lmp);
+  cut_global = utils::numeric(FLERR, arg[1], false, lmp);
+  seed = utils::inumeric(FLERR, arg[2], false, lmp);
+  if (temperature < 0.0)
+    error->all(FLERR, "Illegal pair_style dpd/fpm command: temperature must be >= 0, got {}", arg[0]);
+  if (cut_global <= 0.0)
+    error->all(FLERR, "Illegal pair_style dpd/fpm command: cutoff must be > 0, got {}", arg[1]);
+  if (seed <= 0)
+    error->all(FLERR, "Illegal pair_style dpd/fpm command: seed must be a positive integer, got {}",
+               arg[2]);
+  // the scalar stream: the central noise is then the same number dpd/gen draws for the pair
+  noise = etd::PairNoise(static_cast<std::uint64_t>(seed), etd::NoiseStream::PairScalar);
+
+  // as in stock pair styles: a new global cutoff resets the cutoffs already set
+  if (allocated) {
+    for (int i = 1; i <= atom->ntypes; i++)
+      for (int j = i; j <= atom->ntypes; j++)
+        if (setflag[i][j]) cut[i][j] = cut_global;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J a gamma_C gamma_S s [cutoff]
+------------------------------------------------------------------------- */
+
+void PairDPDFPM::coeff(int narg, char **arg)
+{
+  if (narg < 6 || narg > 7)
+    error->all(FLERR, "Incorrect args for pair_coeff dpd/fpm: expected I J a gamma_C gamma_S s "
+               "[cutoff], got {} arguments", narg);
+  if (!allocated) allocate();
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+  const double a_one = utils::numeric(FLERR, arg[2], false, lmp);
+  const double gamma_c_one = utils::numeric(FLERR, arg[3], false, lmp);
+  const double gamma_s_one = utils::numeric(FLERR, arg[4], false, lmp);
+  const double s_one = utils::numeric(FLERR, arg[5], false, lmp);
+  if (gamma_c_one < 0.0)
+    error->all(FLERR, "pair_coeff dpd/fpm: gamma_C must be >= 0, got {}", arg[3]);
+  if (gamma_s_one < 0.0)
+    error->all(FLERR, "pair_coeff dpd/fpm: gamma_S must be >= 0, got {}", arg[4]);
+  if (s_one <= 0.0)
+    error->all(FLERR, "pair_coeff dpd/fpm: dissipative exponent s must be > 0, got {}", arg[5]);
+  double cut_one = cut_global;
+  if (narg == 7) {
+    cut_one = utils::numeric(FLERR, arg[6], false, lmp);
+    if (cut_one <= 0.0) error->all(FLERR, "pair_coeff dpd/fpm: cutoff must be > 0, got {}", arg[6]);
+  }
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++) {
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      a0[i][j] = a_one;
+      gamma_c[i][j] = gamma_c_one;
+      gamma_s[i][j] = gamma_s_one;
+      exponent_d[i][j] = s_one;
+      cut[i][j] = cut_one;
+      setflag[i][j] = 1;
+      count++;
+    }
+  }
+  if (count == 0) error->all(FLERR, "pair_coeff dpd/fpm: no type pairs selected by {} {}", arg[0], arg[1]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairDPDFPM::init_style()
+{
+  if (!atom->omega_flag || !atom->torque_flag)
+    error->all(FLERR, "Pair style dpd/fpm requires atoms with angular velocity and torque "
+               "(atom_style sphere, or hybrid with sphere)");
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "Pair style dpd/fpm requires ghost atoms store velocity: use 'comm_modify vel yes'");
+  if (atom->tag_enable == 0)
+    error->all(FLERR, "Pair style dpd/fpm requires atom IDs (its noise is keyed on them)");
+  if (update->dt <= 0.0) error->all(FLERR, "Pair style dpd/fpm requires a positive timestep");
+  etd::compat::request_half_list(neighbor, this, instance_me);
+}
+
+double PairDPDFPM::init_one(int i, int j)
+{
+  if (setflag[i][j] == 0)
+    error->all(FLERR, "Pair style dpd/fpm: pair coefficients for types {} {} are not set (no mixing)",
+               i, j);
+
+  const double kT = force->boltz * temperature;
+  etd::FpmCoefficients c;
+  c.set(a0[i][j], gamma_c[i][j], gamma_s[i][j], exponent_d[i][j], cut[i][j], kT);
+  coeffs[i * stride + j] = c;
+  coeffs[j * stride + i] = c;
+
+  a0[j][i] = a0[i][j];
+  gamma_c[j][i] = gamma_c[i][j];
+  gamma_s[j][i] = gamma_s[i][j];
+  exponent_d[j][i] = exponent_d[i][j];
+  cut[j][i] = cut[i][j];
+  return cut[i][j];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairDPDFPM::grow_extras()
+{
+  if (atom->nmax <= nmax_extras) return;
+  nmax_extras = atom->nmax;
+  if (want_friction) {
+    memory->grow(friction, nmax_extras, FRICTION_VALUES, "pair:friction");
+    memory->grow(rot_friction, nmax_extras, FRICTION_VALUES, "pair:rot_friction");
+  }
+  if (want_split) memory->grow(split, nmax_extras, SPLIT_VALUES, "pair:split");
+}
+
+void PairDPDFPM::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  const bool extras = want_friction || want_split;
+  if (extras) {
+    if (!friction && want_friction) nmax_extras = 0;
+    if (!split && want_split) nmax_extras = 0;
+    grow_extras();
+    const int nzero = force->newton_pair ? atom->nlocal + atom->nghost : atom->nlocal;
+    if (want_friction && nzero > 0) {
+      std::memset(&friction[0][0], 0, sizeof(double) * FRICTION_VALUES * nzero);
+      std::memset(&rot_friction[0][0], 0, sizeof(double) * FRICTION_VALUES * nzero);
+    }
+    if (want_split && nzero > 0) std::memset(&split[0][0], 0, sizeof(double) * SPLIT_VALUES * nzero);
+  }
+
+  if (evflag) {
+    if (extras) eval<1, 1>(); else eval<1, 0>();
+  } else {
+    if (extras) eval<0, 1>(); else eval<0, 0>();
+  }
+
+  if (extras && force->newton_pair) etd::compat::reverse_comm(comm, this);
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+template <int EVFLAG, int EXTRAS> void PairDPDFPM::eval()
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  double **omega = atom->omega;
+  double **torque = atom->torque;
+  const int *type = atom->type;
+  const tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal;
+  const double *special_lj = force->special_lj;
+  const int newton_pair = force->newton_pair;
+  const double inv_sqrt_dt = 1.0 / std::sqrt(update->dt);
+  const std::int64_t step = update->ntimestep;
+
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const int itype = type[i];
+    const tagint tag_i = tag[i];
+    const etd::FpmCoefficients *crow = &coeffs[itype * stride];
+    const double *cutsqi = cutsq[itype];
+    const int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+
+    for (int jj = 0; jj < jnum; jj++) {
+      int j = jlist[jj];
+      const double factor = special_lj[sbmask(j)];
+      j &= NEIGHMASK;
+      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+      const int jtype = type[j];
+      if (rsq >= cutsqi[jtype]) continue;
+      const double r = std::sqrt(rsq);
+      if (r < EPSILON) continue;
+      const etd::FpmCoefficients &c = crow[jtype];
+
+      const double v_ij[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+      const double omega_sum[3] = {omega[i][0] + omega[j][0], omega[i][1] + omega[j][1],
+                                   omega[i][2] + omega[j][2]};
+      double theta[4];
+      noise.gaussians4(tag_i, tag[j], step, 0, theta);
+      etd::FpmNoise pair_noise;
+      pair_noise.central = theta[0];
+      pair_noise.shear[0] = theta[1];
+      pair_noise.shear[1] = theta[2];
+      pair_noise.shear[2] = theta[3];
+      const etd::FpmPairResult pr =
+          etd::fpm_pair(c, del, r, v_ij, omega_sum, pair_noise, inv_sqrt_dt, factor);
+      const double fx = pr.force(0), fy = pr.force(1), fz = pr.force(2);
+
+      f[i][0] += fx; f[i][1] += fy; f[i][2] += fz;
+      torque[i][0] += pr.torque[0]; torque[i][1] += pr.torque[1]; torque[i][2] += pr.torque[2];
+      const bool update_j = newton_pair || j < nlocal;
+      if (update_j) {
+        f[j][0] -= fx; f[j][1] -= fy; f[j][2] -= fz;
+        torque[j][0] += pr.torque[0]; torque[j][1] += pr.torque[1]; torque[j][2] += pr.torque[2];
+      }
+
+      if (EXTRAS) {
+        const double rinv = 1.0 / r;
+        const double e[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
+        if (want_friction) {
+          double g[3], gr[3];
+          etd::fpm_translational_friction(pr.central_friction, pr.shear_friction, e, g);
+          etd::fpm_rotational_friction(pr.shear_friction, rsq, e, gr);
+          for (int k = 0; k < 3; k++) {
+            friction[i][k] += g[k];
+            rot_friction[i][k] += gr[k];
+            if (update_j) {
+              friction[j][k] += g[k];
+              rot_friction[j][k] += gr[k];
+            }
+          }
+        }
+        if (want_split) {
+          const double *parts[3] = {pr.conservative, pr.dissipative, pr.random};
+          for (int p = 0; p < 3; p++)
+            for (int k = 0; k < 3; k++) {
+              split[i][3 * p + k] += parts[p][k];
+              if (update_j) split[j][3 * p + k] -= parts[p][k];
+            }
+        }
+      }
+
+      if (EVFLAG) {
+        const double evdwl = eflag_either ? etd::fpm_energy(c, r, factor) : 0.0;
+        ev_tally_xyz(i, j, nlocal, newton_pair, evdwl, 0.0, fx, fy, fz, del[0], del[1], del[2]);
+      }
+    }
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int PairDPDFPM::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  const int last = first + n;
+  for (int i = first; i < last; i++) {
+    if (want_friction)
+      for (int k = 0; k < FRICTION_VALUES; k++) {
+        buf[m++] = friction[i][k];
+        buf[m++] = rot_friction[i][k];
+      }
+    if (want_split)
+      for (int k = 0; k < SPLIT_VALUES; k++) buf[m++] = split[i][k];
+  }
+  return m;
+}
+
+void PairDPDFPM::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int i = 0; i < n; i++) {
+    const int j = list[i];
+    if (want_friction)
+      for (int k = 0; k < FRICTION_VALUES; k++) {
+        friction[j][k] += buf[m++];
+        rot_friction[j][k] += buf[m++];
+      }
+    if (want_split)
+      for (int k = 0; k < SPLIT_VALUES; k++) split[j][k] += buf[m++];
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairDPDFPM::write_restart_settings(FILE *fp)
+{
+  fwrite(&temperature, sizeof(double), 1, fp);
+  fwrite(&cut_global, sizeof(double), 1, fp);
+  fwrite(&seed, sizeof(int), 1, fp);
+  fwrite(&mix_flag, sizeof(int), 1, fp);
+}
+
+void PairDPDFPM::read_restart_settings(FILE *fp)
+{
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &temperature, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &seed, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &mix_flag, sizeof(int), 1, fp, nullptr, error);
+  }
+  MPI_Bcast(&temperature, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&seed, 1, MPI_INT, 0, world);
+  MPI_Bcast(&mix_flag, 1, MPI_INT, 0, world);
+  noise = etd::PairNoise(static_cast<std::uint64_t>(seed), etd::NoiseStream::PairScalar);
+}
+
+void PairDPDFPM::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j]) {
+        const double values[NCOEFF] = {a0[i][j], gamma_c[i][j], gamma_s[i][j], exponent_d[i][j],
+                                       cut[i][j]};
+        fwrite(values, sizeof(double), NCOEFF, fp);
+      }
+    }
+}
+
+void PairDPDFPM::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  const int me = comm->me;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (setflag[i][j]) {
+        double values[NCOEFF];
+        if (me == 0) utils::sfread(FLERR, values, sizeof(double), NCOEFF, fp, nullptr, error);
+        MPI_Bcast(values, NCOEFF, MPI_DOUBLE, 0, world);
+        a0[i][j] = values[0];
+        gamma_c[i][j] = values[1];
+        gamma_s[i][j] = values[2];
+        exponent_d[i][j] = values[3];
+        cut[i][j] = values[4];
+      }
+    }
+}
+
+void PairDPDFPM::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    fprintf(fp, "%d %.15g %.15g %.15g %.15g %.15g\n", i, a0[i][i], gamma_c[i][i], gamma_s[i][i],
+            exponent_d[i][i], cut[i][i]);
+}
+
+void PairDPDFPM::write_data_all(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      fprintf(fp, "%d %d %.15g %.15g %.15g %.15g %.15g\n", i, j, a0[i][j], gamma_c[i][j],
+              gamma_s[i][j], exponent_d[i][j], cut[i][j]);
+}
+
+/* ----------------------------------------------------------------------
+   conservative part only, as stock pair dpd: the other parts depend on velocities and noise
+------------------------------------------------------------------------- */
+
+double PairDPDFPM::single(int, int, int itype, int jtype, double rsq, double, double factor_lj,
+                          double &fforce)
+{
+  fforce = 0.0;
+  const etd::FpmCoefficients &c = coefficients(itype, jtype);
+  if (rsq >= c.rcsq) return 0.0;
+  const double r = std::sqrt(rsq);
+  if (r < EPSILON) return 0.0;
+  fforce = factor_lj * c.a * (1.0 - r * c.inv_rc) / r;
+  return etd::fpm_energy(c, r, factor_lj);
+}
+
+void *PairDPDFPM::extract(const char *name, int &dim)
+{
+  dim = 2;
+  if (std::strcmp(name, "a0") == 0) return (void *) a0;
+  if (std::strcmp(name, "gamma_c") == 0) return (void *) gamma_c;
+  if (std::strcmp(name, "gamma_s") == 0) return (void *) gamma_s;
+  if (std::strcmp(name, "s") == 0) return (void *) exponent_d;
+  return nullptr;
+}
+
+double PairDPDFPM::memory_usage()
+{
+  double bytes = Pair::memory_usage();
+  bytes += static_cast<double>(nmax_extras) *
+      ((friction ? 2 * FRICTION_VALUES : 0) + (split ? SPLIT_VALUES : 0)) * sizeof(double);
+  return bytes;
+}
