@@ -91,11 +91,19 @@ void FixETDImplicit::init()
   const int ntypes = atom->ntypes;
   pair_table.assign((ntypes + 1) * (ntypes + 1), nullptr);
   for (auto *p : providers) {
-    p->request_conservative_only();
+    bool supplies = false;
     for (int i = 1; i <= ntypes; i++)
       for (int j = 1; j <= ntypes; j++)
-        if (const etd::PairCoefficients *c = p->dpd_coefficients(i, j))
+        if (const etd::PairCoefficients *c = p->dpd_coefficients(i, j)) {
           pair_table[i * (ntypes + 1) + j] = c;
+          supplies = true;
+        }
+    // a style that cannot hand over its friction (dpd/fpm for now) must not be silently
+    // reduced to its conservative part
+    if (!supplies)
+      error->all(FLERR, "Fix etd scheme implicit supports pair style dpd/gen only (alone or in "
+                 "hybrid/overlay); use scheme diagonal with dpd/fpm");
+    p->request_conservative_only();
   }
   noise = etd::PairNoise(providers.front()->noise_seed(), etd::NoiseStream::Integrator);
   etd::compat::request_fix_half_list(neighbor, this, instance_me);

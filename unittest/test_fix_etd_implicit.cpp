@@ -231,3 +231,16 @@ TEST(FixEtdImplicit, OverdampedCouetteFlowIsLinear)
   EXPECT_LT(std::fabs(intercept + 5.0 * slope), 0.3);    // antisymmetric about the middle
   EXPECT_LT(worst, 0.5);                        // linear: no bin off the line by more than noise
 }
+
+// dpd/fpm cannot hand over its friction to the implicit scheme yet: an error, never a silent
+// conservative-only run
+TEST(FixEtdImplicit, RefusesPairStylesWithoutFrictionCoefficients)
+{
+  Lammps l;
+  const std::string message = l.error_of(
+      {"units lj", "atom_style sphere", "comm_modify vel yes", "region box block 0 5 0 5 0 5",
+       "create_box 1 box", "create_atoms 1 single 1 1 1", "create_atoms 1 single 1.5 1 1",
+       "pair_style dpd/fpm 1.0 1.0 123", "pair_coeff 1 1 25 4.5 4.5 0.5",
+       "fix 1 all etd scheme implicit", "run 1"});
+  EXPECT_NE(message.find("supports pair style dpd/gen only"), std::string::npos) << message;
+}
