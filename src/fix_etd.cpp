@@ -85,6 +85,7 @@ void FixETD::init()
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix etd does not support run_style respa");
   providers = etd::find_dpd_providers(lmp);
+  rotation_checked = false;
   if (providers.empty())
     error->all(FLERR, "Fix etd requires pair style dpd/gen or dpd/fpm (alone or in pair "
                "hybrid/overlay) to supply the diagonal friction");
@@ -187,21 +188,33 @@ void FixETD::update_angular_velocities()
   std::vector<double **> rotational;
   for (auto *p : providers)
     if (double **g = p->rotational_friction()) rotational.push_back(g);
-  if (rotational.empty()) return;
-  if (!atom->radius_flag || !atom->rmass_flag)
-    error->one(FLERR, "Fix etd: rotating atoms need a radius and per-atom mass for their moment of "
-               "inertia (atom_style sphere)");
-  double **omega = atom->omega;
-  double **torque = atom->torque;
   const double *radius = atom->radius;
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
+  if (!rotation_checked) {    // first step of each run (init() clears the flag), collectively
+    int local = rotational.empty() ? 0 : 1;
+    MPI_Allreduce(&local, &rotation_active, 1, MPI_INT, MPI_MAX, world);
+    if (rotation_active && (!atom->radius_flag || !atom->rmass_flag))
+      error->all(FLERR, "Fix etd: rotating atoms need a radius and per-atom mass for their moment "
+                 "of inertia (atom_style sphere)");
+    tagint local_bad = 0, bad = 0;
+    if (rotation_active)
+      for (int i = 0; i < atom->nlocal; i++)
+        if ((mask[i] & groupbit) && rmass[i] * radius[i] * radius[i] <= 0.0)
+          local_bad = MAX(local_bad, atom->tag[i]);
+    MPI_Allreduce(&local_bad, &bad, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+    if (bad > 0)
+      error->all(FLERR, "Fix etd: atom {} has zero moment of inertia; give it a diameter (set "
+                 "... diameter) and a mass", bad);
+    rotation_checked = true;
+  }
+  if (!rotation_active || rotational.empty()) return;
+  double **omega = atom->omega;
+  double **torque = atom->torque;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const double inertia = 0.4 * rmass[i] * radius[i] * radius[i];
-    if (inertia <= 0.0)
-      error->one(FLERR, "Fix etd: atom {} has zero moment of inertia; give it a diameter (set "
-                 "... diameter) and a mass", atom->tag[i]);
+    if (inertia <= 0.0) continue;    // changed after the check: leave it alone
     for (int k = 0; k < 3; k++) {
       double friction = 0.0;
       for (double **g : rotational) friction += g[i][k];

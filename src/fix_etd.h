@@ -40,6 +40,8 @@ class FixETD : public Fix {
   double dt;
   bool needs_random_part() const { return order == 2 || noise == Noise::Exact; }
   void update_angular_velocities();    // pair styles with rotation (dpd/fpm)
+  bool rotation_checked = false;
+  int rotation_active = 0;
   std::vector<etd::DpdExtrasProvider *> providers;
   double **previous_forcing;    // [nmax][4]: A_(n-1) per component, and 1 where it is valid
   double momentum_correction[3];    // last correction applied (output)

@@ -137,6 +137,33 @@ void write_random_data(const std::string &path, int natoms, double L, unsigned s
   MPI_Barrier(MPI_COMM_WORLD);
 }
 
+void write_random_sphere_data(const std::string &path, int natoms, double L, unsigned seed,
+                              int ntypes, double vmax, double wmax, double diameter)
+{
+  if (world_rank() == 0) {
+    std::mt19937_64 gen(seed);
+    std::uniform_real_distribution<double> pos(0.0, L), vel(-vmax, vmax), spin(-wmax, wmax);
+    const double density = 6.0 / (3.14159265358979323846 * diameter * diameter * diameter);
+    std::FILE *fp = std::fopen(path.c_str(), "w");
+    if (!fp) throw std::runtime_error("cannot write " + path);
+    std::fprintf(fp, "ETD-DPD test configuration (spheres)\n\n%d atoms\n%d atom types\n\n", natoms, ntypes);
+    std::fprintf(fp, "0 %.17g xlo xhi\n0 %.17g ylo yhi\n0 %.17g zlo zhi\n\nAtoms # sphere\n\n", L, L, L);
+    for (int i = 1; i <= natoms; i++) {
+      const double x = pos(gen), y = pos(gen), z = pos(gen);
+      std::fprintf(fp, "%d %d %.17g %.17g %.17g %.17g %.17g\n", i, 1 + (i - 1) % ntypes, diameter,
+                   density, x, y, z);
+    }
+    std::fprintf(fp, "\nVelocities\n\n");
+    for (int i = 1; i <= natoms; i++) {
+      const double vx = vel(gen), vy = vel(gen), vz = vel(gen);
+      const double wx = spin(gen), wy = spin(gen), wz = spin(gen);
+      std::fprintf(fp, "%d %.17g %.17g %.17g %.17g %.17g %.17g\n", i, vx, vy, vz, wx, wy, wz);
+    }
+    std::fclose(fp);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+}
+
 std::string work_file(const std::string &name) { return std::string(ETD_TEST_WORKDIR) + "/" + name; }
 
 int world_rank()

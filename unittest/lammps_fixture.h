@@ -42,6 +42,11 @@ class Lammps {
 // A data file with n atoms at random positions in a cube of side L (deterministic).
 void write_random_data(const std::string &path, int natoms, double L, unsigned seed,
                        int ntypes = 1, double vmax = 0.0);
+// The same for atom_style sphere: diameter d, mass 1 (density 6/(pi d^3)), random velocities
+// in [-vmax, vmax] and angular velocities in [-wmax, wmax].
+void write_random_sphere_data(const std::string &path, int natoms, double L, unsigned seed,
+                              int ntypes = 1, double vmax = 0.0, double wmax = 0.0,
+                              double diameter = 1.0);
 std::string work_file(const std::string &name);    // a path in the test's build folder
 int world_rank();
 int world_size();
