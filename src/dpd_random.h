@@ -6,7 +6,6 @@
 #ifndef ETD_DPD_RANDOM_H
 #define ETD_DPD_RANDOM_H
 
-#include <Random123/boxmuller.hpp>
 #include <Random123/philox.h>
 #include <boost/random/normal_distribution.hpp>
 
@@ -27,15 +26,15 @@ class PairNoise {
     key_ = {{seed, static_cast<std::uint64_t>(stream)}};
   }
 
-  // Four independent unit Gaussians for pair (i, j) at a timestep; 'block' selects further
-  // groups of four (FPM needs nine numbers per pair).
+  // Four independent unit Gaussians for pair (i, j) at a timestep, drawn like gaussian() (so
+  // with group 0 the first one is gaussian()'s theta_ij); 'group' selects further, disjoint
+  // groups of four (each group owns 2^32 Philox blocks).
   void gaussians4(std::int64_t tag_i, std::int64_t tag_j, std::int64_t timestep,
-                  std::uint64_t block, double out[4]) const
+                  std::uint64_t group, double out[4]) const
   {
-    const Generator::ctr_type bits = draw(tag_i, tag_j, timestep, block);
-    const r123::double2 g0 = r123::boxmuller(bits.v[0], bits.v[1]);
-    const r123::double2 g1 = r123::boxmuller(bits.v[2], bits.v[3]);
-    out[0] = g0.x; out[1] = g0.y; out[2] = g1.x; out[3] = g1.y;
+    BlockEngine words(*this, tag_i, tag_j, timestep, group << 32);
+    boost::random::normal_distribution<double> normal;
+    for (int k = 0; k < 4; k++) out[k] = normal(words);
   }
 
   // One unit Gaussian for pair (i, j): the scalar DPD noise theta_ij. Boost.Random's ziggurat
@@ -54,8 +53,8 @@ class PairNoise {
    public:
     using result_type = std::uint64_t;
     BlockEngine(const PairNoise &noise, std::int64_t tag_i, std::int64_t tag_j,
-                std::int64_t timestep)
-        : noise_(noise), tag_i_(tag_i), tag_j_(tag_j), timestep_(timestep)
+                std::int64_t timestep, std::uint64_t first_block = 0)
+        : noise_(noise), tag_i_(tag_i), tag_j_(tag_j), timestep_(timestep), block_(first_block)
     {
     }
     static constexpr result_type min() { return 0; }
@@ -72,7 +71,7 @@ class PairNoise {
    private:
     const PairNoise &noise_;
     std::int64_t tag_i_, tag_j_, timestep_;
-    std::uint64_t block_ = 0;
+    std::uint64_t block_;
     Generator::ctr_type words_{};
     int used_ = 4;
   };
