@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Throughput of ETD-DPD against stock LAMMPS DPD, side by side in one LAMMPS run per rank count.
 # Usage: bash bench/run_bench.sh [steps]      (writes bench/results/ and prints a table)
+#        BENCH_RANKS="1" bash bench/run_bench.sh 300     (only these rank counts)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 prefix=$(bash "$here/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')
@@ -9,8 +10,9 @@ out="$here/bench/results"
 mkdir -p "$out"
 mpi_flags=()
 [ "$(id -u)" = 0 ] && mpi_flags+=(--allow-run-as-root)
-for ranks in 1 2; do
+for ranks in ${BENCH_RANKS:-1 2}; do
   mpirun "${mpi_flags[@]}" -np $ranks "$prefix/bin/lmp" -in "$here/bench/in.pair_throughput" \
     -var plugin "$here/build/etddpd.so" -var steps "$steps" -log "$out/log.np$ranks" -screen none
 done
-python3 "$here/bench/throughput_table.py" "$out"/log.np1 "$out"/log.np2
+logs=(); for ranks in ${BENCH_RANKS:-1 2}; do logs+=("$out/log.np$ranks"); done
+/usr/bin/python3 "$here/bench/throughput_table.py" "${logs[@]}"

@@ -75,6 +75,17 @@ inline EtdCoefficients etd_coefficients(double friction_rate, double dt, int ord
   return c;
 }
 
+// First order with the piecewise noise, written with the total force F = m A - Gamma v (the
+// pair style's force, its diagonal friction included):
+//   e^z v + dt phi1(z) (F + Gamma v)/m = v + dt phi1(z) F/m,   since dt phi1(z) Gamma/m = -(e^z - 1).
+// The update is an explicit Euler step whose length dt phi1(z) <= dt shrinks where the friction
+// is stiff; this returns that effective step (one expm1, no decay factor needed).
+inline double first_order_effective_step(double friction_rate, double dt)
+{
+  const double z = -friction_rate * dt;
+  return (z == 0.0) ? dt : std::expm1(z) / (-friction_rate);
+}
+
 }    // namespace etd
 
 #endif

@@ -133,6 +133,21 @@ void FixETD::final_integrate()
     friction_arrays.push_back(p->diagonal_friction());
     if (separate_noise) split_arrays.push_back(p->force_split());
   }
+  // the common case (order 1, piecewise noise, no momentum correction) in its cheap form:
+  // v += dt phi1(z) F/m with the full force (etd_coefficients.h), and no per-atom history
+  if (order == 1 && !separate_noise && !conserve_momentum) {
+    for (int i = 0; i < nlocal; i++) {
+      if (!(mask[i] & groupbit)) continue;
+      const double inv_m = 1.0 / (rmass ? rmass[i] : mass[type[i]]);
+      for (int k = 0; k < 3; k++) {
+        double friction = 0.0;
+        for (double **g : friction_arrays) friction += g[i][k];
+        v[i][k] += etd::first_order_effective_step(friction * inv_m, dt) * f[i][k] * inv_m;
+      }
+    }
+    return;
+  }
+
   double local_sums[7] = {0.0};    // actual momentum change, expected (dt F), group mass
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;

@@ -138,6 +138,27 @@ TEST(EtdCoefficients, SharedExpm1MatchesDirectFormulas)
   }
 }
 
+TEST(EtdCoefficients, FirstOrderEffectiveStepIsTheFullUpdate)
+{
+  // v' = e^z v + dt phi1 (F + Gamma v)/m must equal v + (effective step) F/m for any v, F
+  const double dt = 0.003, m = 0.01;
+  for (double gamma : {0.0, 1e-9, 1e-3, 0.5, 7.0, 300.0, 2e5}) {
+    const double rate = gamma / m;
+    const auto c = etd::etd_coefficients(rate, dt, 1);
+    const double h = etd::first_order_effective_step(rate, dt);
+    EXPECT_LE(h, dt);
+    EXPECT_GT(h, 0.0);
+    for (double v : {-3.0, 0.0, 1.7})
+      for (double force : {-40.0, 2.5}) {
+        const double full = c.decay * v + c.current * (force + gamma * v) / m;
+        const double cheap = v + h * force / m;
+        EXPECT_NEAR(cheap, full, 1e-12 * (std::fabs(full) + std::fabs(v) + dt * std::fabs(force) / m))
+            << "gamma=" << gamma << " v=" << v << " F=" << force;
+      }
+  }
+  EXPECT_EQ(etd::first_order_effective_step(0.0, dt), dt);
+}
+
 TEST(Weights, DefinitionsAndCutoffs)
 {
   EXPECT_DOUBLE_EQ(etd::dissipative_weight(0.3, 1.0, 2.0), 0.49);
