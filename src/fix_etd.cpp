@@ -230,11 +230,12 @@ void FixETD::update_angular_velocities()
     if (!(mask[i] & groupbit)) continue;
     const double inertia = 0.4 * rmass[i] * radius[i] * radius[i];
     if (inertia <= 0.0) continue;    // changed after the check: leave it alone
+    const double inv_inertia = 1.0 / inertia;
+    // e^z Omega + dt phi1(z) (T + Gamma_rot Omega)/I = Omega + dt phi1(z) T/I (etd_coefficients.h)
     for (int k = 0; k < 3; k++) {
       double friction = 0.0;
       for (double **g : rotational) friction += g[i][k];
-      const etd::EtdCoefficients c = etd::etd_coefficients(friction / inertia, dt, 1);
-      omega[i][k] = c.decay * omega[i][k] + c.current * (torque[i][k] + friction * omega[i][k]) / inertia;
+      omega[i][k] += etd::first_order_effective_step(friction * inv_inertia, dt) * torque[i][k] * inv_inertia;
     }
   }
 }
