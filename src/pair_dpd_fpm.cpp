@@ -248,12 +248,18 @@ template <int EVFLAG, int EXTRAS> void PairDPDFPM::eval()
     const double *cutsqi = cutsq[itype];
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
+    // atom i's sums stay in registers over its neighbours (stores to j could alias them in memory)
+    const double xi[3] = {x[i][0], x[i][1], x[i][2]};
+    const double vi[3] = {v[i][0], v[i][1], v[i][2]};
+    const double omegai[3] = {omega[i][0], omega[i][1], omega[i][2]};
+    double fi[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0};
+    double gi[3] = {0.0, 0.0, 0.0}, gri[3] = {0.0, 0.0, 0.0};
 
     for (int jj = 0; jj < jnum; jj++) {
       int j = jlist[jj];
       const double factor = special_lj[sbmask(j)];
       j &= NEIGHMASK;
-      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double del[3] = {xi[0] - x[j][0], xi[1] - x[j][1], xi[2] - x[j][2]};
       const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
       const int jtype = type[j];
       if (rsq >= cutsqi[jtype]) continue;
@@ -261,9 +267,9 @@ template <int EVFLAG, int EXTRAS> void PairDPDFPM::eval()
       if (r < EPSILON) continue;
       const etd::FpmCoefficients &c = crow[jtype];
 
-      const double v_ij[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
-      const double omega_sum[3] = {omega[i][0] + omega[j][0], omega[i][1] + omega[j][1],
-                                   omega[i][2] + omega[j][2]};
+      const double v_ij[3] = {vi[0] - v[j][0], vi[1] - v[j][1], vi[2] - v[j][2]};
+      const double omega_sum[3] = {omegai[0] + omega[j][0], omegai[1] + omega[j][1],
+                                   omegai[2] + omega[j][2]};
       double theta[4];
       noise.gaussians4(tag_i, tag[j], step, 0, theta);
       etd::FpmNoise pair_noise;
@@ -275,8 +281,8 @@ template <int EVFLAG, int EXTRAS> void PairDPDFPM::eval()
           etd::fpm_pair(c, del, r, v_ij, omega_sum, pair_noise, inv_sqrt_dt, factor);
       const double fx = pr.force(0), fy = pr.force(1), fz = pr.force(2);
 
-      f[i][0] += fx; f[i][1] += fy; f[i][2] += fz;
-      torque[i][0] += pr.torque[0]; torque[i][1] += pr.torque[1]; torque[i][2] += pr.torque[2];
+      fi[0] += fx; fi[1] += fy; fi[2] += fz;
+      ti[0] += pr.torque[0]; ti[1] += pr.torque[1]; ti[2] += pr.torque[2];
       const bool update_j = newton_pair || j < nlocal;
       if (update_j) {
         f[j][0] -= fx; f[j][1] -= fy; f[j][2] -= fz;
@@ -291,8 +297,8 @@ template <int EVFLAG, int EXTRAS> void PairDPDFPM::eval()
           etd::fpm_translational_friction(pr.central_friction, pr.shear_friction, e, g);
           etd::fpm_rotational_friction(pr.shear_friction, rsq, e, gr);
           for (int k = 0; k < 3; k++) {
-            friction[i][k] += g[k];
-            rot_friction[i][k] += gr[k];
+            gi[k] += g[k];
+            gri[k] += gr[k];
             if (update_j) {
               friction[j][k] += g[k];
               rot_friction[j][k] += gr[k];
@@ -314,6 +320,15 @@ template <int EVFLAG, int EXTRAS> void PairDPDFPM::eval()
         ev_tally_xyz(i, j, nlocal, newton_pair, evdwl, 0.0, fx, fy, fz, del[0], del[1], del[2]);
       }
     }
+    for (int k = 0; k < 3; k++) {
+      f[i][k] += fi[k];
+      torque[i][k] += ti[k];
+    }
+    if (EXTRAS && want_friction)
+      for (int k = 0; k < 3; k++) {
+        friction[i][k] += gi[k];
+        rot_friction[i][k] += gri[k];
+      }
   }
 }
 
