@@ -378,9 +378,26 @@ void FixETDImplicit::friction_noise_step()
   }
   std::vector<double> &solution = work.solution;
   solve(rhs, solution, 1.0, 0.5 * h, false);
+
+  // The exact solution conserves the group's momentum when no pair couples it to atoms outside
+  // it (the rows of G sum to zero, so sum M v' = sum rhs); an iterate leaves an error of the
+  // order of the tolerance, which would random-walk over a long run. Remove it exactly.
+  double sums[4] = {0.0, 0.0, 0.0, 0.0};
+  if (!any_fixed_partner) {
+    double local[4] = {0.0, 0.0, 0.0, 0.0};
+    for (int i = 0; i < nlocal; i++)
+      if (mask[i] & groupbit) {
+        const double m = rmass ? rmass[i] : mass[type[i]];
+        for (int k = 0; k < 3; k++) local[k] += rhs[3 * i + k] - m * solution[3 * i + k];
+        local[3] += m;
+      }
+    MPI_Allreduce(local, sums, 4, MPI_DOUBLE, MPI_SUM, world);
+  }
+  const double shift[3] = {sums[3] > 0.0 ? sums[0] / sums[3] : 0.0, sums[3] > 0.0 ? sums[1] / sums[3] : 0.0,
+                           sums[3] > 0.0 ? sums[2] / sums[3] : 0.0};
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
-      for (int k = 0; k < 3; k++) v[i][k] = solution[3 * i + k];
+      for (int k = 0; k < 3; k++) v[i][k] = solution[3 * i + k] + shift[k];
 }
 
 void FixETDImplicit::overdamped_step()
