@@ -209,13 +209,22 @@ void FixETDImplicit::build_pairs()
   any_fixed_partner = any;
 }
 
-// gu = G u over owned atoms (u given on owned atoms; ghosts are filled here)
-void FixETDImplicit::apply_friction(const std::vector<double> &u, std::vector<double> &gu)
+// gu = G u over owned atoms (u given on owned atoms; ghosts are filled here). With group_only,
+// atoms outside the group count as at rest (the solver's unknowns are the group's velocities).
+void FixETDImplicit::apply_friction(const double *u, std::vector<double> &gu, bool group_only)
 {
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
+  const int *mask = atom->mask;
   operand.resize(3 * nall);
-  std::copy(u.begin(), u.begin() + 3 * nlocal, operand.begin());
+  if (group_only) {
+    for (int i = 0; i < nlocal; i++) {
+      const double keep = (mask[i] & groupbit) ? 1.0 : 0.0;
+      for (int k = 0; k < 3; k++) operand[3 * i + k] = keep * u[3 * i + k];
+    }
+  } else {
+    std::copy(u, u + 3 * nlocal, operand.begin());
+  }
   comm_vector = &operand;
   etd::compat::forward_comm(comm, this);
   const bool newton = force->newton_pair;
@@ -271,10 +280,10 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
     for (int k = 0; k < 3; k++) inv_diag[3 * i + k] = block_inverse[9 * i + 4 * k];
   }
 
-  auto global_sum = [this](double value) {
-    double sum = 0.0;
-    MPI_Allreduce(&value, &sum, 1, MPI_DOUBLE, MPI_SUM, world);
-    return sum;
+  auto global_sum = [this](double *values, int count) {
+    double sums[2];
+    MPI_Allreduce(values, sums, count, MPI_DOUBLE, MPI_SUM, world);
+    for (int k = 0; k < count; k++) values[k] = sums[k];
   };
   // per-component mean over the solved unknowns (not those held at zero), removed where the
   // translation is singular; held unknowns must stay untouched for CG to stay consistent
@@ -293,14 +302,9 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
   };
   if (deflate && group_count > 0.0) remove_mean(rhs.data());
 
-  std::vector<double> &masked = work.masked, &gu = work.gu;
-  masked.resize(n);
+  std::vector<double> &gu = work.gu;
   auto apply = [&](const double *u, double *au) {
-    for (int i = 0; i < nlocal; i++) {
-      const double keep = (mask[i] & groupbit) ? 1.0 : 0.0;
-      for (int k = 0; k < 3; k++) masked[3 * i + k] = keep * u[3 * i + k];
-    }
-    apply_friction(masked, gu);
+    apply_friction(u, gu, true);
     for (int i = 0; i < nlocal; i++) {
       const bool mobile = mask[i] & groupbit;
       for (int k = 0; k < 3; k++)
@@ -364,7 +368,7 @@ void FixETDImplicit::friction_noise_step()
     const double weight = (mask[i] & groupbit) ? 1.0 : 2.0;
     for (int k = 0; k < 3; k++) u[3 * i + k] = weight * v[i][k];
   }
-  apply_friction(u, gu);
+  apply_friction(u.data(), gu, false);
   impulse.assign(3 * nall, 0.0);
   etd::accumulate_noise(pairs, pair_noise, std::sqrt(h), impulse.data(), [=](int j) { return newton || j < nlocal; });
   if (newton) {
@@ -417,7 +421,7 @@ void FixETDImplicit::overdamped_step()
   for (int i = 0; i < nlocal; i++)
     if (!(mask[i] & groupbit))
       for (int k = 0; k < 3; k++) u[3 * i + k] = v[i][k];
-  apply_friction(u, gu);
+  apply_friction(u.data(), gu, false);
   impulse.assign(3 * nall, 0.0);
   etd::accumulate_noise(pairs, pair_noise, 1.0 / std::sqrt(dt), impulse.data(),
                         [=](int j) { return newton || j < nlocal; });

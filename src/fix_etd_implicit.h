@@ -54,7 +54,7 @@ class FixETDImplicit : public Fix {
 
   // work vectors reused from step to step (per-step allocation costs page faults at scale)
   struct Work {
-    std::vector<double> masses, rhs, inv_diag, block_inverse, masked, gu;    // solve()
+    std::vector<double> masses, rhs, inv_diag, block_inverse, gu;    // solve()
     std::vector<double> u, gu_rhs, step_rhs, impulse, solution;              // the steps
     etd::CgWorkspace cg;
   } work;
@@ -67,7 +67,7 @@ class FixETDImplicit : public Fix {
   void kick(double fraction);
   void drift(double fraction);
   void build_pairs();
-  void apply_friction(const std::vector<double> &u, std::vector<double> &gu);
+  void apply_friction(const double *u, std::vector<double> &gu, bool group_only);
   void friction_noise_step();
   void overdamped_step();
   void solve(const std::vector<double> &rhs, std::vector<double> &solution, double mass_weight,

@@ -137,7 +137,8 @@ struct SolverResult {
 
 // Jacobi-preconditioned conjugate gradients for A x = b over n unknowns that this rank owns.
 //   apply(p, Ap): Ap = A p (the caller communicates ghosts as needed)
-//   global_sum(value): sum over all ranks
+//   global_sum(values, count): sums the count values over all ranks, in place (one reduction
+//   for the pair of dot products each iteration needs)
 // x holds the starting guess on entry. Unknowns with inv_diag = 0 are held at their start
 // value (frozen components, atoms without friction in the zero-mass limit).
 struct NoProjection {
@@ -185,7 +186,7 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
   SolverResult result;
   double bb = 0.0;
   for (int k = 0; k < n; k++) bb += b[k] * b[k];
-  bb = global_sum(bb);
+  global_sum(&bb, 1);
   if (bb == 0.0) {
     for (int k = 0; k < n; k++) x[k] = 0.0;
     result.converged = true;
@@ -202,14 +203,16 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
     rz += r[k] * z[k];
     rr += r[k] * r[k];
   }
-  rz = global_sum(rz);
-  rr = global_sum(rr);
+  double sums[2] = {rz, rr};
+  global_sum(sums, 2);
+  rz = sums[0];
+  rr = sums[1];
   const double target = tolerance * tolerance * bb;
   while (rr > target && result.iterations < max_iterations) {
     apply(p.data(), ap.data());
     double pap = 0.0;
     for (int k = 0; k < n; k++) pap += p[k] * ap[k];
-    pap = global_sum(pap);
+    global_sum(&pap, 1);
     if (!(pap > 0.0)) break;    // breakdown: A not positive on p (cannot happen for SPD A)
     const double alpha = rz / pap;
     double rz_new = 0.0;
@@ -224,8 +227,11 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
       rz_new += r[k] * z[k];
       rr += r[k] * r[k];
     }
-    rz_new = global_sum(rz_new);
-    rr = global_sum(rr);
+    sums[0] = rz_new;
+    sums[1] = rr;
+    global_sum(sums, 2);
+    rz_new = sums[0];
+    rr = sums[1];
     const double beta = rz_new / rz;
     rz = rz_new;
     for (int k = 0; k < n; k++) p[k] = z[k] + beta * p[k];
