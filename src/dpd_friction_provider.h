@@ -7,6 +7,7 @@
 namespace etd {
 
 struct PairCoefficients;
+struct FpmCoefficients;
 
 // Per-atom extras a pair style accumulates during compute() on request (owned atoms complete,
 // ghost contributions already reverse-communicated):
@@ -27,6 +28,8 @@ class DpdExtrasProvider {
   // noise, and a switch (set in each init, cleared by the style's own init) that leaves the
   // style computing only its non-dissipative forces.
   virtual const PairCoefficients *dpd_coefficients(int /*itype*/, int /*jtype*/) { return nullptr; }
+  // the same for dpd/fpm's central and shear friction with rotation (nullptr elsewhere)
+  virtual const FpmCoefficients *fpm_coefficients(int /*itype*/, int /*jtype*/) { return nullptr; }
   virtual std::uint64_t noise_seed() const { return 0; }
   virtual void request_conservative_only() {}
 

@@ -8,13 +8,16 @@
 //   solve G v = F + B xi / sqrt(h);  x += h v
 // G, B and xi are built at the positions where the solve happens, from the fix's own half
 // neighbor list and the pair styles' coefficients; atoms outside the group keep their
-// velocities (walls, a fixed sphere) and enter G with them.
+// velocities (walls, a fixed sphere) and enter G with them. With dpd/fpm pairs the unknowns are
+// (v, Omega) per atom, M holds masses and moments of inertia, and G couples translation and
+// rotation through the pairs' shear friction (friction_operator.h).
 #include "fix_etd_implicit.h"
 
 #include "atom.h"
 #include "comm.h"
 #include "dpd_kernel.h"
 #include "dpd_style_lookup.h"
+#include "fpm_kernel.h"
 #include "error.h"
 #include "force.h"
 #include "lammps_compat.h"
@@ -33,7 +36,7 @@ using namespace FixConst;
 
 FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), overdamped(false), tolerance(1e-6), max_iterations(200), dt(0.0),
-    list(nullptr), any_fixed_partner(false), comm_vector(nullptr), comm_width(3), last_iterations(0),
+    list(nullptr), dofs(3), any_fixed_partner(false), comm_vector(nullptr), comm_width(3), last_iterations(0),
     last_residual(0.0), iterations_sum(0.0), solves(0)
 {
   time_integrate = 1;
@@ -41,8 +44,8 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
   size_vector = 3;
   extvector = 0;
   global_freq = 1;
-  comm_forward = 3;
-  comm_reverse = 6;    // 3 per atom, 6 for the preconditioner's blocks
+  comm_forward = 6;     // 3 values per atom, 6 with rotation
+  comm_reverse = 12;   // 3 or 6 per atom, 6 or 12 for the preconditioner's blocks
 
   int iarg = 3;
   while (iarg < narg) {
@@ -90,20 +93,43 @@ void FixETDImplicit::init()
 
   const int ntypes = atom->ntypes;
   pair_table.assign((ntypes + 1) * (ntypes + 1), nullptr);
+  fpm_table.assign((ntypes + 1) * (ntypes + 1), nullptr);
+  bool rotation = false;
   for (auto *p : providers) {
     bool supplies = false;
     for (int i = 1; i <= ntypes; i++)
-      for (int j = 1; j <= ntypes; j++)
+      for (int j = 1; j <= ntypes; j++) {
         if (const etd::PairCoefficients *c = p->dpd_coefficients(i, j)) {
           pair_table[i * (ntypes + 1) + j] = c;
           supplies = true;
         }
-    // a style that cannot hand over its friction (dpd/fpm for now) must not be silently
-    // reduced to its conservative part
+        if (const etd::FpmCoefficients *c = p->fpm_coefficients(i, j)) {
+          fpm_table[i * (ntypes + 1) + j] = c;
+          supplies = rotation = true;
+        }
+      }
+    // a style that cannot hand over its friction must not be silently reduced to its
+    // conservative part
     if (!supplies)
-      error->all(FLERR, "Fix etd scheme implicit supports pair style dpd/gen only (alone or in "
-                 "hybrid/overlay); use scheme diagonal with dpd/fpm");
+      error->all(FLERR, "Fix etd scheme implicit: a pair style supplies no DPD coefficients");
     p->request_conservative_only();
+  }
+  dofs = rotation ? 6 : 3;
+  if (rotation) {
+    if (!atom->omega_flag || !atom->torque_flag || !atom->radius_flag || !atom->rmass_flag)
+      error->all(FLERR, "Fix etd scheme implicit with pair style dpd/fpm needs angular velocities, "
+                 "torques, radii and per-atom masses (atom_style sphere)");
+    if (overdamped)
+      error->all(FLERR, "Fix etd scheme implicit: overdamped yes is not available with pair style "
+                 "dpd/fpm (its rotation needs inertia); use overdamped no with a small mass");
+    tagint local_bad = 0, bad = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & groupbit) && atom->rmass[i] * atom->radius[i] * atom->radius[i] <= 0.0)
+        local_bad = MAX(local_bad, atom->tag[i]);
+    MPI_Allreduce(&local_bad, &bad, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+    if (bad > 0)
+      error->all(FLERR, "Fix etd scheme implicit: atom {} has zero moment of inertia; give it a "
+                 "diameter (set ... diameter) and a mass", bad);
   }
   noise = etd::PairNoise(providers.front()->noise_seed(), etd::NoiseStream::Integrator);
   etd::compat::request_fix_half_list(neighbor, this, instance_me);
@@ -128,6 +154,38 @@ void FixETDImplicit::kick(double fraction)
       const double scale = fraction * dt / (rmass ? rmass[i] : mass[type[i]]);
       for (int k = 0; k < 3; k++) v[i][k] += scale * f[i][k];
     }
+  if (dofs == 6) {    // torques from anything but the DPD friction and noise (none from dpd/fpm)
+    double **omega = atom->omega;
+    double **torque = atom->torque;
+    const double *radius = atom->radius;
+    for (int i = 0; i < atom->nlocal; i++)
+      if (mask[i] & groupbit) {
+        const double scale = fraction * dt / (0.4 * rmass[i] * radius[i] * radius[i]);
+        for (int k = 0; k < 3; k++) omega[i][k] += scale * torque[i][k];
+      }
+  }
+}
+
+// each unknown's inertia: mass for velocities, 0.4 m r^2 for angular velocities
+void FixETDImplicit::dof_inertia(std::vector<double> &inertia) const
+{
+  const int nlocal = atom->nlocal;
+  const int *type = atom->type;
+  const double *rmass = atom->rmass;
+  const double *mass = atom->mass;
+  inertia.resize(dofs * nlocal);
+  for (int i = 0; i < nlocal; i++) {
+    const double m = rmass ? rmass[i] : mass[type[i]];
+    for (int k = 0; k < 3; k++) inertia[dofs * i + k] = m;
+    if (dofs == 6)
+      for (int k = 3; k < 6; k++) inertia[dofs * i + k] = 0.4 * m * atom->radius[i] * atom->radius[i];
+  }
+}
+
+// the unknowns of atom i as stored in LAMMPS: v, then Omega with rotation
+double *FixETDImplicit::dof_pointer(int i, int k) const
+{
+  return (k < 3) ? &atom->v[i][k] : &atom->omega[i][k - 3];
 }
 
 void FixETDImplicit::drift(double fraction)
@@ -174,6 +232,8 @@ void FixETDImplicit::build_pairs()
 
   pairs.clear();
   pair_noise.clear();
+  fpm_pairs.clear();
+  fpm_noise.clear();
   int fixed_partner = 0;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
@@ -187,9 +247,15 @@ void FixETDImplicit::build_pairs()
       const bool j_mobile = mask[j] & groupbit;
       if (!i_mobile && !j_mobile) continue;
       const etd::PairCoefficients *c = pair_table[type[i] * ntypes1 + type[j]];
-      if (!c || c->gamma == 0.0) continue;
       const double d[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
       const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      if (!c) {
+        const etd::FpmCoefficients *fc = fpm_table[type[i] * ntypes1 + type[j]];
+        if (fc && add_fpm_pair(*fc, i, j, d, rsq, factor, tag[i], tag[j], step) && (!i_mobile || !j_mobile))
+          fixed_partner = 1;
+        continue;
+      }
+      if (c->gamma == 0.0) continue;
       if (rsq >= c->rcsq_d || rsq == 0.0) continue;
       const double r = std::sqrt(rsq);
       const double q = 1.0 - r * c->inv_rc_d;
@@ -209,6 +275,37 @@ void FixETDImplicit::build_pairs()
   any_fixed_partner = any;
 }
 
+// One dpd/fpm pair (friction_operator.h): its geometry and its random force on i (without the
+// time factor), sqrt(w) [sigma_C theta_C e + sigma_S theta_A x e]; false outside the cutoff.
+bool FixETDImplicit::add_fpm_pair(const etd::FpmCoefficients &c, int i, int j, const double d[3],
+                                  double rsq, double factor, tagint tag_i, tagint tag_j,
+                                  std::int64_t step)
+{
+  if (rsq >= c.rcsq || rsq == 0.0 || (c.gamma_c == 0.0 && c.gamma_s == 0.0)) return false;
+  const double r = std::sqrt(rsq);
+  const double q = 1.0 - r * c.inv_rc;
+  const double w_r = etd::power_of(q, c.random_kind, 0.5 * c.s);
+  const double w = w_r * w_r;
+  const double e[3] = {d[0] / r, d[1] / r, d[2] / r};
+  etd::FpmFrictionPair p;
+  p.i = i;
+  p.j = j;
+  for (int k = 0; k < 3; k++) p.e[k] = static_cast<float>(e[k]);
+  p.half_r = static_cast<float>(0.5 * r);
+  p.central = static_cast<float>(factor * c.gamma_c * w);
+  p.shear = static_cast<float>(factor * c.gamma_s * w);
+  fpm_pairs.push_back(p);
+  double theta[4];
+  noise.gaussians4(tag_i, tag_j, step, 0, theta);
+  const double amplitude = std::sqrt(factor) * w_r;
+  const double axial[3] = {theta[1], theta[2], theta[3]};
+  const double sheared[3] = {axial[1] * e[2] - axial[2] * e[1], axial[2] * e[0] - axial[0] * e[2],
+                             axial[0] * e[1] - axial[1] * e[0]};
+  for (int k = 0; k < 3; k++)
+    fpm_noise.push_back(amplitude * (c.sigma_c * theta[0] * e[k] + c.sigma_s * sheared[k]));
+  return true;
+}
+
 // gu = G u over owned atoms (u given on owned atoms; ghosts are filled here). With group_only,
 // atoms outside the group count as at rest (the solver's unknowns are the group's velocities).
 void FixETDImplicit::apply_friction(const double *u, std::vector<double> &gu, bool group_only)
@@ -216,24 +313,43 @@ void FixETDImplicit::apply_friction(const double *u, std::vector<double> &gu, bo
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
   const int *mask = atom->mask;
-  operand.resize(3 * nall);
+  operand.resize(dofs * nall);
   if (group_only) {
     for (int i = 0; i < nlocal; i++) {
       const double keep = (mask[i] & groupbit) ? 1.0 : 0.0;
-      for (int k = 0; k < 3; k++) operand[3 * i + k] = keep * u[3 * i + k];
+      for (int k = 0; k < dofs; k++) operand[dofs * i + k] = keep * u[dofs * i + k];
     }
   } else {
-    std::copy(u, u + 3 * nlocal, operand.begin());
+    std::copy(u, u + dofs * nlocal, operand.begin());
   }
   comm_vector = &operand;
+  comm_width = dofs;
   etd::compat::forward_comm(comm, this);
   const bool newton = force->newton_pair;
-  gu.resize(3 * nall);
+  gu.resize(dofs * nall);
   std::fill(gu.begin(), gu.end(), 0.0);
-  etd::accumulate_friction(pairs, operand.data(), gu.data(),
-                           [=](int j) { return newton || j < nlocal; });
+  auto keep_j = [=](int j) { return newton || j < nlocal; };
+  etd::accumulate_friction(pairs, operand.data(), gu.data(), keep_j, dofs);
+  if (dofs == 6) etd::accumulate_fpm_friction(fpm_pairs, operand.data(), gu.data(), keep_j);
   if (newton) {
     comm_vector = &gu;
+    etd::compat::reverse_comm(comm, this);
+  }
+}
+
+// the random impulse sum_pairs B xi, times scale, on owned atoms
+void FixETDImplicit::random_impulse(double scale, std::vector<double> &impulse)
+{
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const bool newton = force->newton_pair;
+  impulse.assign(dofs * nall, 0.0);
+  auto keep_j = [=](int j) { return newton || j < nlocal; };
+  etd::accumulate_noise(pairs, pair_noise, scale, impulse.data(), keep_j, dofs);
+  if (dofs == 6) etd::accumulate_fpm_noise(fpm_pairs, fpm_noise, scale, impulse.data(), keep_j);
+  if (newton) {
+    comm_vector = &impulse;
+    comm_width = dofs;
     etd::compat::reverse_comm(comm, this);
   }
 }
@@ -248,36 +364,36 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
 {
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
-  const int n = 3 * nlocal;
+  const int n = dofs * nlocal;
   const int *mask = atom->mask;
-  const int *type = atom->type;
-  const double *rmass = atom->rmass;
-  const double *mass = atom->mass;
   const bool newton = force->newton_pair;
 
   std::vector<double> &masses = work.masses, &rhs = work.rhs;
-  masses.resize(nlocal);
   rhs.assign(rhs_in.begin(), rhs_in.begin() + n);
-  for (int i = 0; i < nlocal; i++) masses[i] = rmass ? rmass[i] : mass[type[i]];
+  dof_inertia(masses);
 
   // block-Jacobi preconditioner: each atom's 3x3 block of mass_weight M + friction_weight G
-  diagonal.assign(6 * nall, 0.0);
-  etd::accumulate_blocks(pairs, diagonal.data(), [=](int j) { return newton || j < nlocal; });
+  // (per atom one 3x3 block, 6 values, or with rotation two: v-v and Omega-Omega)
+  const int nblocks = n / 3;
+  const int block_values = 2 * dofs;
+  diagonal.assign(block_values * nall, 0.0);
+  auto keep_j = [=](int j) { return newton || j < nlocal; };
+  etd::accumulate_blocks(pairs, diagonal.data(), keep_j, block_values);
+  if (dofs == 6) etd::accumulate_fpm_blocks(fpm_pairs, diagonal.data(), keep_j);
   if (newton) {
     comm_vector = &diagonal;
-    comm_width = 6;
+    comm_width = block_values;
     etd::compat::reverse_comm(comm, this);
-    comm_width = 3;
   }
   std::vector<double> &inv_diag = work.inv_diag, &block_inverse = work.block_inverse;
   inv_diag.assign(n, 0.0);
-  block_inverse.assign(9 * nlocal, 0.0);
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
+  block_inverse.assign(9 * nblocks, 0.0);
+  for (int b = 0; b < nblocks; b++) {
+    if (!(mask[b * 3 / dofs] & groupbit)) continue;
     // an atom without friction (and, overdamped, without mass) is held at 0
-    if (!etd::invert_block(&diagonal[6 * i], mass_weight * masses[i], friction_weight, &block_inverse[9 * i]))
+    if (!etd::invert_block(&diagonal[6 * b], mass_weight * masses[3 * b], friction_weight, &block_inverse[9 * b]))
       continue;
-    for (int k = 0; k < 3; k++) inv_diag[3 * i + k] = block_inverse[9 * i + 4 * k];
+    for (int k = 0; k < 3; k++) inv_diag[3 * b + k] = block_inverse[9 * b + 4 * k];
   }
 
   auto global_sum = [this](double *values, int count) {
@@ -307,18 +423,18 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
     apply_friction(u, gu, true);
     for (int i = 0; i < nlocal; i++) {
       const bool mobile = mask[i] & groupbit;
-      for (int k = 0; k < 3; k++)
-        au[3 * i + k] = mobile ? mass_weight * masses[i] * u[3 * i + k] + friction_weight * gu[3 * i + k] : 0.0;
+      for (int k = dofs * i; k < dofs * (i + 1); k++)
+        au[k] = mobile ? mass_weight * masses[k] * u[k] + friction_weight * gu[k] : 0.0;
     }
     if (deflate) remove_mean(au);
   };
 
   // start from the block-Jacobi solution
   solution.assign(n, 0.0);
-  for (int i = 0; i < nlocal; i++)
+  for (int b = 0; b < nblocks; b++)
     for (int k = 0; k < 3; k++) {
-      const double *m = &block_inverse[9 * i + 3 * k];
-      solution[3 * i + k] = m[0] * rhs[3 * i] + m[1] * rhs[3 * i + 1] + m[2] * rhs[3 * i + 2];
+      const double *m = &block_inverse[9 * b + 3 * k];
+      solution[3 * b + k] = m[0] * rhs[3 * b] + m[1] * rhs[3 * b + 1] + m[2] * rhs[3 * b + 2];
     }
   const etd::SolverResult result = etd::conjugate_gradient(
       n, apply, global_sum, inv_diag.data(), rhs.data(), solution.data(), tolerance, max_iterations,
@@ -349,37 +465,28 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
 void FixETDImplicit::friction_noise_step()
 {
   build_pairs();
-  double **v = atom->v;
   const int *mask = atom->mask;
-  const int *type = atom->type;
-  const double *rmass = atom->rmass;
-  const double *mass = atom->mass;
   const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  const bool newton = force->newton_pair;
   const double h = dt;
 
-  // b = M v - h/2 G (v + v_fixed) + sqrt(h) B xi: the fixed atoms' velocities appear twice,
-  // once from the old and once from the new side of the Pade update
+  // b = M q - h/2 G (q + q_fixed) + sqrt(h) B xi: the fixed atoms' velocities appear twice,
+  // once from the old and once from the new side of the Pade update (q = v, or v and Omega)
   std::vector<double> &u = work.u, &gu = work.gu_rhs, &rhs = work.step_rhs, &impulse = work.impulse;
-  u.resize(3 * nlocal);
-  rhs.resize(3 * nlocal);
+  std::vector<double> &inertia = work.inertia;
+  dof_inertia(inertia);
+  u.resize(dofs * nlocal);
+  rhs.resize(dofs * nlocal);
   for (int i = 0; i < nlocal; i++) {
     const double weight = (mask[i] & groupbit) ? 1.0 : 2.0;
-    for (int k = 0; k < 3; k++) u[3 * i + k] = weight * v[i][k];
+    for (int k = 0; k < dofs; k++) u[dofs * i + k] = weight * *dof_pointer(i, k);
   }
   apply_friction(u.data(), gu, false);
-  impulse.assign(3 * nall, 0.0);
-  etd::accumulate_noise(pairs, pair_noise, std::sqrt(h), impulse.data(), [=](int j) { return newton || j < nlocal; });
-  if (newton) {
-    comm_vector = &impulse;
-    etd::compat::reverse_comm(comm, this);
-  }
-  for (int i = 0; i < nlocal; i++) {
-    const double m = rmass ? rmass[i] : mass[type[i]];
-    for (int k = 0; k < 3; k++)
-      rhs[3 * i + k] = m * v[i][k] - 0.5 * h * gu[3 * i + k] + impulse[3 * i + k];
-  }
+  random_impulse(std::sqrt(h), impulse);
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < dofs; k++) {
+      const int d = dofs * i + k;
+      rhs[d] = inertia[d] * *dof_pointer(i, k) - 0.5 * h * gu[d] + impulse[d];
+    }
   std::vector<double> &solution = work.solution;
   solve(rhs, solution, 1.0, 0.5 * h, false);
 
@@ -391,9 +498,8 @@ void FixETDImplicit::friction_noise_step()
     double local[4] = {0.0, 0.0, 0.0, 0.0};
     for (int i = 0; i < nlocal; i++)
       if (mask[i] & groupbit) {
-        const double m = rmass ? rmass[i] : mass[type[i]];
-        for (int k = 0; k < 3; k++) local[k] += rhs[3 * i + k] - m * solution[3 * i + k];
-        local[3] += m;
+        for (int k = 0; k < 3; k++) local[k] += rhs[dofs * i + k] - inertia[dofs * i] * solution[dofs * i + k];
+        local[3] += inertia[dofs * i];
       }
     MPI_Allreduce(local, sums, 4, MPI_DOUBLE, MPI_SUM, world);
   }
@@ -401,7 +507,7 @@ void FixETDImplicit::friction_noise_step()
                            sums[3] > 0.0 ? sums[2] / sums[3] : 0.0};
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
-      for (int k = 0; k < 3; k++) v[i][k] = solution[3 * i + k] + shift[k];
+      for (int k = 0; k < dofs; k++) *dof_pointer(i, k) = solution[dofs * i + k] + (k < 3 ? shift[k] : 0.0);
 }
 
 void FixETDImplicit::overdamped_step()
@@ -411,10 +517,8 @@ void FixETDImplicit::overdamped_step()
   double **f = atom->f;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  const bool newton = force->newton_pair;
 
-  // G v = F + B xi / sqrt(h) - G v_fixed
+  // G v = F + B xi / sqrt(h) - G v_fixed (translation only: init() refuses rotation here)
   std::vector<double> &u = work.u, &gu = work.gu_rhs, &rhs = work.step_rhs, &impulse = work.impulse;
   u.assign(3 * nlocal, 0.0);
   rhs.resize(3 * nlocal);
@@ -422,13 +526,7 @@ void FixETDImplicit::overdamped_step()
     if (!(mask[i] & groupbit))
       for (int k = 0; k < 3; k++) u[3 * i + k] = v[i][k];
   apply_friction(u.data(), gu, false);
-  impulse.assign(3 * nall, 0.0);
-  etd::accumulate_noise(pairs, pair_noise, 1.0 / std::sqrt(dt), impulse.data(),
-                        [=](int j) { return newton || j < nlocal; });
-  if (newton) {
-    comm_vector = &impulse;
-    etd::compat::reverse_comm(comm, this);
-  }
+  random_impulse(1.0 / std::sqrt(dt), impulse);
   for (int i = 0; i < nlocal; i++)
     for (int k = 0; k < 3; k++) rhs[3 * i + k] = f[i][k] + impulse[3 * i + k] - gu[3 * i + k];
   std::vector<double> &solution = work.solution;
@@ -455,9 +553,7 @@ int FixETDImplicit::pack_forward_comm(int n, int *list_, double *buf, int, int *
   int m = 0;
   for (int i = 0; i < n; i++) {
     const int j = list_[i];
-    buf[m++] = vec[3 * j];
-    buf[m++] = vec[3 * j + 1];
-    buf[m++] = vec[3 * j + 2];
+    for (int k = 0; k < comm_width; k++) buf[m++] = vec[comm_width * j + k];
   }
   return m;
 }
@@ -466,11 +562,8 @@ void FixETDImplicit::unpack_forward_comm(int n, int first, double *buf)
 {
   std::vector<double> &vec = *comm_vector;
   int m = 0;
-  for (int i = first; i < first + n; i++) {
-    vec[3 * i] = buf[m++];
-    vec[3 * i + 1] = buf[m++];
-    vec[3 * i + 2] = buf[m++];
-  }
+  for (int i = first; i < first + n; i++)
+    for (int k = 0; k < comm_width; k++) vec[comm_width * i + k] = buf[m++];
 }
 
 int FixETDImplicit::pack_reverse_comm(int n, int first, double *buf)
@@ -493,5 +586,6 @@ void FixETDImplicit::unpack_reverse_comm(int n, int *list_, double *buf)
 double FixETDImplicit::memory_usage()
 {
   return sizeof(etd::FrictionPair) * pairs.capacity() + sizeof(double) * pair_noise.capacity() +
+      sizeof(etd::FpmFrictionPair) * fpm_pairs.capacity() + sizeof(double) * fpm_noise.capacity() +
       sizeof(double) * (operand.capacity() + diagonal.capacity());
 }

@@ -13,6 +13,7 @@
 namespace etd {
 class DpdExtrasProvider;
 struct PairCoefficients;
+struct FpmCoefficients;
 }    // namespace etd
 
 namespace LAMMPS_NS {
@@ -41,21 +42,25 @@ class FixETDImplicit : public Fix {
   class NeighList *list;
   std::vector<etd::DpdExtrasProvider *> providers;
   std::vector<const etd::PairCoefficients *> pair_table;    // (ntypes+1)^2, nullptr: no DPD
+  std::vector<const etd::FpmCoefficients *> fpm_table;      // the same for dpd/fpm pairs
+  int dofs;    // unknowns per atom: 3 (v), or 6 (v and Omega) when dpd/fpm pairs take part
   etd::PairNoise noise;
   std::vector<etd::FrictionPair> pairs;    // this step's geometry
   std::vector<double> pair_noise;          // and each pair's sigma w_R theta
+  std::vector<etd::FpmFrictionPair> fpm_pairs;    // dpd/fpm pairs of this step
+  std::vector<double> fpm_noise;                  // and their random forces (3 per pair)
   bool any_fixed_partner;                  // some pair couples to an atom outside the group
 
-  // per-atom vectors over owned + ghost atoms, 3 values each; comm_vector is the one the
-  // forward/reverse communication moves
+  // per-atom vectors over owned + ghost atoms, dofs values each; comm_vector is the one the
+  // forward/reverse communication moves, comm_width values per atom
   std::vector<double> operand, diagonal;
   std::vector<double> *comm_vector;
-  int comm_width;    // values per atom in the reverse communication (3, or 6 for blocks)
+  int comm_width;
 
   // work vectors reused from step to step (per-step allocation costs page faults at scale)
   struct Work {
     std::vector<double> masses, rhs, inv_diag, block_inverse, gu;    // solve()
-    std::vector<double> u, gu_rhs, step_rhs, impulse, solution;              // the steps
+    std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia;    // the steps
     etd::CgWorkspace cg;
   } work;
 
@@ -67,6 +72,11 @@ class FixETDImplicit : public Fix {
   void kick(double fraction);
   void drift(double fraction);
   void build_pairs();
+  bool add_fpm_pair(const etd::FpmCoefficients &c, int i, int j, const double d[3], double rsq,
+                    double factor, tagint tag_i, tagint tag_j, std::int64_t step);
+  void random_impulse(double scale, std::vector<double> &impulse);
+  void dof_inertia(std::vector<double> &inertia) const;
+  double *dof_pointer(int i, int k) const;
   void apply_friction(const double *u, std::vector<double> &gu, bool group_only);
   void friction_noise_step();
   void overdamped_step();

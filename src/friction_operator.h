@@ -34,18 +34,18 @@ struct FrictionPair {
 // also holds).
 template <typename UpdateJ>
 inline void accumulate_friction(const std::vector<FrictionPair> &pairs, const double *u,
-                                double *out, UpdateJ update_j)
+                                double *out, UpdateJ update_j, int stride = 3)
 {
   for (const FrictionPair &p : pairs) {
-    const double *ui = u + 3 * p.i, *uj = u + 3 * p.j;
+    const double *ui = u + stride * p.i, *uj = u + stride * p.j;
     const double projected = p.friction * (p.e[0] * (ui[0] - uj[0]) + p.e[1] * (ui[1] - uj[1]) +
                                            p.e[2] * (ui[2] - uj[2]));
-    double *oi = out + 3 * p.i;
+    double *oi = out + stride * p.i;
     oi[0] += projected * p.e[0];
     oi[1] += projected * p.e[1];
     oi[2] += projected * p.e[2];
     if (update_j(p.j)) {
-      double *oj = out + 3 * p.j;
+      double *oj = out + stride * p.j;
       oj[0] -= projected * p.e[0];
       oj[1] -= projected * p.e[1];
       oj[2] -= projected * p.e[2];
@@ -57,17 +57,17 @@ inline void accumulate_friction(const std::vector<FrictionPair> &pairs, const do
 // random impulse, which sums to zero over all atoms.
 template <typename UpdateJ>
 inline void accumulate_noise(const std::vector<FrictionPair> &pairs, const std::vector<double> &noise,
-                             double scale, double *out, UpdateJ update_j)
+                             double scale, double *out, UpdateJ update_j, int stride = 3)
 {
   for (size_t n = 0; n < pairs.size(); n++) {
     const FrictionPair &p = pairs[n];
     const double amount = scale * noise[n];
-    double *oi = out + 3 * p.i;
+    double *oi = out + stride * p.i;
     oi[0] += amount * p.e[0];
     oi[1] += amount * p.e[1];
     oi[2] += amount * p.e[2];
     if (update_j(p.j)) {
-      double *oj = out + 3 * p.j;
+      double *oj = out + stride * p.j;
       oj[0] -= amount * p.e[0];
       oj[1] -= amount * p.e[1];
       oj[2] -= amount * p.e[2];
@@ -92,15 +92,100 @@ inline void accumulate_diagonal(const std::vector<FrictionPair> &pairs, double *
 // the block-Jacobi preconditioner.
 template <typename UpdateJ>
 inline void accumulate_blocks(const std::vector<FrictionPair> &pairs, double *blocks,
-                              UpdateJ update_j)
+                              UpdateJ update_j, int stride = 6)
 {
   for (const FrictionPair &p : pairs) {
     const double g = p.friction;
     const double b[6] = {g * p.e[0] * p.e[0], g * p.e[1] * p.e[1], g * p.e[2] * p.e[2],
                          g * p.e[0] * p.e[1], g * p.e[0] * p.e[2], g * p.e[1] * p.e[2]};
-    for (int k = 0; k < 6; k++) blocks[6 * p.i + k] += b[k];
+    for (int k = 0; k < 6; k++) blocks[stride * p.i + k] += b[k];
     if (update_j(p.j))
-      for (int k = 0; k < 6; k++) blocks[6 * p.j + k] += b[k];
+      for (int k = 0; k < 6; k++) blocks[stride * p.j + k] += b[k];
+  }
+}
+
+/* ---- dpd/fpm pairs: translation and rotation, 6 unknowns per atom (v, Omega) ------------------
+   The friction acts on the slip velocity of the two surfaces at the mid-point,
+     u = v_i - v_j + (r/2) e x (Omega_i + Omega_j),   F = central (e.u) e + shear (u - (e.u) e),
+   and (G q) gets +F on v_i, -F on v_j and -(r/2) e x F on both Omega_i and Omega_j (the
+   transpose of u's dependence on them). The random generalised force has the same structure, so
+   B B^T = 2 kBT G holds for translation and rotation together. */
+struct FpmFrictionPair {
+  int i, j;
+  float e[3];
+  float half_r;     // r/2
+  float central;    // gamma_C w
+  float shear;      // gamma_S w
+};
+
+// The generalised force of one pair given the pair force F on i: adds it with the given sign.
+template <typename UpdateJ>
+inline void scatter_fpm(const FpmFrictionPair &p, const double force[3], double *out, UpdateJ update_j)
+{
+  const double t[3] = {-p.half_r * (p.e[1] * force[2] - p.e[2] * force[1]),
+                       -p.half_r * (p.e[2] * force[0] - p.e[0] * force[2]),
+                       -p.half_r * (p.e[0] * force[1] - p.e[1] * force[0])};
+  double *oi = out + 6 * p.i;
+  for (int k = 0; k < 3; k++) {
+    oi[k] += force[k];
+    oi[3 + k] += t[k];
+  }
+  if (update_j(p.j)) {
+    double *oj = out + 6 * p.j;
+    for (int k = 0; k < 3; k++) {
+      oj[k] -= force[k];
+      oj[3 + k] += t[k];
+    }
+  }
+}
+
+template <typename UpdateJ>
+inline void accumulate_fpm_friction(const std::vector<FpmFrictionPair> &pairs, const double *q,
+                                    double *out, UpdateJ update_j)
+{
+  for (const FpmFrictionPair &p : pairs) {
+    const double *qi = q + 6 * p.i, *qj = q + 6 * p.j;
+    const double spin[3] = {qi[3] + qj[3], qi[4] + qj[4], qi[5] + qj[5]};
+    const double u[3] = {qi[0] - qj[0] + p.half_r * (p.e[1] * spin[2] - p.e[2] * spin[1]),
+                         qi[1] - qj[1] + p.half_r * (p.e[2] * spin[0] - p.e[0] * spin[2]),
+                         qi[2] - qj[2] + p.half_r * (p.e[0] * spin[1] - p.e[1] * spin[0])};
+    const double normal = (p.central - p.shear) * (p.e[0] * u[0] + p.e[1] * u[1] + p.e[2] * u[2]);
+    const double force[3] = {p.shear * u[0] + normal * p.e[0], p.shear * u[1] + normal * p.e[1],
+                             p.shear * u[2] + normal * p.e[2]};
+    scatter_fpm(p, force, out, update_j);
+  }
+}
+
+// noise: 3 values per pair, the random force on i (without the time factor), times scale
+template <typename UpdateJ>
+inline void accumulate_fpm_noise(const std::vector<FpmFrictionPair> &pairs, const std::vector<double> &noise,
+                                 double scale, double *out, UpdateJ update_j)
+{
+  for (size_t n = 0; n < pairs.size(); n++) {
+    const double force[3] = {scale * noise[3 * n], scale * noise[3 * n + 1], scale * noise[3 * n + 2]};
+    scatter_fpm(pairs[n], force, out, update_j);
+  }
+}
+
+// The two 3x3 diagonal blocks per atom (12 values: v-v then Omega-Omega, each xx yy zz xy xz yz):
+// central e e + shear (1 - e e) and (r/2)^2 shear (1 - e e). (The v-Omega coupling within one
+// atom is left out of the preconditioner, which stays symmetric positive definite.)
+template <typename UpdateJ>
+inline void accumulate_fpm_blocks(const std::vector<FpmFrictionPair> &pairs, double *blocks, UpdateJ update_j)
+{
+  for (const FpmFrictionPair &p : pairs) {
+    const double ee[6] = {p.e[0] * p.e[0], p.e[1] * p.e[1], p.e[2] * p.e[2],
+                          p.e[0] * p.e[1], p.e[0] * p.e[2], p.e[1] * p.e[2]};
+    const double rot = p.half_r * p.half_r * p.shear;
+    double b[12];
+    for (int k = 0; k < 6; k++) {
+      const double identity = (k < 3) ? 1.0 : 0.0;
+      b[k] = p.central * ee[k] + p.shear * (identity - ee[k]);
+      b[6 + k] = rot * (identity - ee[k]);
+    }
+    for (int k = 0; k < 12; k++) blocks[12 * p.i + k] += b[k];
+    if (update_j(p.j))
+      for (int k = 0; k < 12; k++) blocks[12 * p.j + k] += b[k];
   }
 }
 

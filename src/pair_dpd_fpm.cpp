@@ -11,6 +11,7 @@
 #include "update.h"
 #include "utils.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -26,7 +27,8 @@ constexpr int NCOEFF = 5;    // a, gamma_C, gamma_S, s, cutoff
 PairDPDFPM::PairDPDFPM(LAMMPS *lmp) :
     Pair(lmp), temperature(0.0), cut_global(0.0), seed(0), a0(nullptr), gamma_c(nullptr),
     gamma_s(nullptr), exponent_d(nullptr), cut(nullptr), stride(0), want_friction(false),
-    want_split(false), friction(nullptr), rot_friction(nullptr), split(nullptr), nmax_extras(0)
+    want_split(false), conservative_only(false), friction(nullptr), rot_friction(nullptr),
+    split(nullptr), nmax_extras(0)
 {
   writedata = 1;
   restartinfo = 1;
@@ -159,6 +161,14 @@ void PairDPDFPM::init_style()
     error->all(FLERR, "Pair style dpd/fpm requires atom IDs (its noise is keyed on them)");
   if (update->dt <= 0.0) error->all(FLERR, "Pair style dpd/fpm requires a positive timestep");
   etd::compat::request_half_list(neighbor, this, instance_me);
+  conservative_only = false;    // fix etd scheme implicit asks again in its init, after this one
+}
+
+const etd::FpmCoefficients *PairDPDFPM::fpm_coefficients(int i, int j)
+{
+  if (i < 1 || j < 1 || i > atom->ntypes || j > atom->ntypes) return nullptr;
+  if (!setflag[std::min(i, j)][std::max(i, j)]) return nullptr;
+  return &coeffs[i * stride + j];
 }
 
 double PairDPDFPM::init_one(int i, int j)
@@ -210,7 +220,9 @@ void PairDPDFPM::compute(int eflag, int vflag)
     if (want_split && nzero > 0) std::memset(&split[0][0], 0, sizeof(double) * SPLIT_VALUES * nzero);
   }
 
-  if (evflag) {
+  if (conservative_only) {
+    if (evflag) eval_conservative<1>(); else eval_conservative<0>();
+  } else if (evflag) {
     if (extras) eval<1, 1>(); else eval<1, 0>();
   } else {
     if (extras) eval<0, 1>(); else eval<0, 0>();
@@ -329,6 +341,54 @@ template <int EVFLAG, int EXTRAS> void PairDPDFPM::eval()
         friction[i][k] += gi[k];
         rot_friction[i][k] += gri[k];
       }
+  }
+}
+
+// Only the central conservative force a (1 - r/rc) e, which makes no torque: what the implicit
+// scheme of fix etd leaves to the pair style (it applies friction and noise itself).
+template <int EVFLAG> void PairDPDFPM::eval_conservative()
+{
+  double **x = atom->x;
+  double **f = atom->f;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const double *special_lj = force->special_lj;
+  const int newton_pair = force->newton_pair;
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const int itype = type[i];
+    const etd::FpmCoefficients *crow = &coeffs[itype * stride];
+    const double *cutsqi = cutsq[itype];
+    const int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    const double xi[3] = {x[i][0], x[i][1], x[i][2]};
+    double fi[3] = {0.0, 0.0, 0.0};
+    for (int jj = 0; jj < jnum; jj++) {
+      int j = jlist[jj];
+      const double factor = special_lj[sbmask(j)];
+      j &= NEIGHMASK;
+      const double del[3] = {xi[0] - x[j][0], xi[1] - x[j][1], xi[2] - x[j][2]};
+      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+      const int jtype = type[j];
+      if (rsq >= cutsqi[jtype]) continue;
+      const double r = std::sqrt(rsq);
+      if (r < EPSILON) continue;
+      const etd::FpmCoefficients &c = crow[jtype];
+      const double fpair = factor * c.a * (1.0 - r * c.inv_rc) / r;
+      for (int k = 0; k < 3; k++) fi[k] += del[k] * fpair;
+      if (newton_pair || j < nlocal)
+        for (int k = 0; k < 3; k++) f[j][k] -= del[k] * fpair;
+      if (EVFLAG) {
+        const double evdwl = eflag_either ? etd::fpm_energy(c, r, factor) : 0.0;
+        ev_tally(i, j, nlocal, newton_pair, evdwl, 0.0, fpair, del[0], del[1], del[2]);
+      }
+    }
+    for (int k = 0; k < 3; k++) f[i][k] += fi[k];
   }
 }
 

@@ -42,6 +42,9 @@ class PairDPDFPM : public Pair, public etd::DpdExtrasProvider {
   double **rotational_friction() override { return rot_friction; }
 
   const etd::FpmCoefficients &coefficients(int i, int j) const { return coeffs[i * stride + j]; }
+  const etd::FpmCoefficients *fpm_coefficients(int i, int j) override;
+  std::uint64_t noise_seed() const override { return static_cast<std::uint64_t>(seed); }
+  void request_conservative_only() override { conservative_only = true; }
 
  protected:
   double temperature, cut_global;
@@ -55,6 +58,7 @@ class PairDPDFPM : public Pair, public etd::DpdExtrasProvider {
   int stride;
 
   bool want_friction, want_split;
+  bool conservative_only;    // friction, noise and torques left to fix etd's implicit scheme
   double **friction;        // [nmax][3] translational diagonal
   double **rot_friction;    // [nmax][3] rotational diagonal
   double **split;           // [nmax][9]
@@ -63,6 +67,7 @@ class PairDPDFPM : public Pair, public etd::DpdExtrasProvider {
   void allocate();
   void grow_extras();
   template <int EVFLAG, int EXTRAS> void eval();
+  template <int EVFLAG> void eval_conservative();
 };
 
 }    // namespace LAMMPS_NS

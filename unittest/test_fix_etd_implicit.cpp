@@ -235,15 +235,27 @@ TEST(FixEtdImplicit, OverdampedCouetteFlowIsLinear)
   EXPECT_LT(worst, 0.5);                        // linear: no bin off the line by more than noise
 }
 
-// dpd/fpm cannot hand over its friction to the implicit scheme yet: an error, never a silent
-// conservative-only run
-TEST(FixEtdImplicit, RefusesPairStylesWithoutFrictionCoefficients)
+// dpd/fpm with rotation has no zero-mass form here: overdamped yes is refused, as is an atom
+// without moment of inertia
+TEST(FixEtdImplicit, FpmRefusesOverdampedAndZeroInertia)
 {
-  Lammps l;
-  const std::string message = l.error_of(
-      {"units lj", "atom_style sphere", "comm_modify vel yes", "region box block 0 5 0 5 0 5",
-       "create_box 1 box", "create_atoms 1 single 1 1 1", "create_atoms 1 single 1.5 1 1",
-       "pair_style dpd/fpm 1.0 1.0 123", "pair_coeff 1 1 25 4.5 4.5 0.5",
-       "fix 1 all etd scheme implicit", "run 1"});
-  EXPECT_NE(message.find("supports pair style dpd/gen only"), std::string::npos) << message;
+  const std::vector<std::string> box = {
+      "units lj", "atom_style sphere", "comm_modify vel yes", "region box block 0 5 0 5 0 5",
+      "create_box 1 box", "create_atoms 1 single 1 1 1", "create_atoms 1 single 1.5 1 1",
+      "pair_style dpd/fpm 1.0 1.0 123", "pair_coeff 1 1 25 4.5 4.5 0.5"};
+  {
+    Lammps l;
+    auto cmds = box;
+    cmds.insert(cmds.end(), {"fix 1 all etd scheme implicit overdamped yes", "run 1"});
+    const std::string message = l.error_of(cmds);
+    EXPECT_NE(message.find("overdamped yes is not available with pair style dpd/fpm"), std::string::npos)
+        << message;
+  }
+  {
+    Lammps l;
+    auto cmds = box;
+    cmds.insert(cmds.end(), {"set atom 2 diameter 0.0", "fix 1 all etd scheme implicit", "run 1"});
+    const std::string message = l.error_of(cmds);
+    EXPECT_NE(message.find("atom 2 has zero moment of inertia"), std::string::npos) << message;
+  }
 }

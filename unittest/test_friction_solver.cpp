@@ -2,6 +2,7 @@
 // momentum conservation, solver accuracy, and the zero-mass limit.
 #include "dpd_kernel.h"
 #include "dpd_random.h"
+#include "fpm_kernel.h"
 #include "friction_operator.h"
 
 #include <gtest/gtest.h>
@@ -238,4 +239,73 @@ TEST(FrictionOperator, BlockInverseAndItsSingularFallback)
   EXPECT_EQ(inverse[8], 0.0);
   const double nothing[6] = {0, 0, 0, 0, 0, 0};
   EXPECT_FALSE(etd::invert_block(nothing, 0.0, 1.0, inverse));
+}
+
+// The 6-unknown operator of dpd/fpm pairs is the pair kernel's friction: G q gives minus the
+// dissipative force on i and minus the torque on i and j (fpm_pair at zero noise), for
+// translation and rotation alike; it is symmetric, positive semidefinite and blind to a rigid
+// translation; its blocks are the diagonal of G.
+TEST(FrictionOperator, FpmPairOperatorIsTheKernelsFriction)
+{
+  std::mt19937_64 gen(11);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  etd::FpmCoefficients c;
+  c.set(25.0, 3.5, 5.5, 0.5, 1.0, 1.0);
+  const double del[3] = {0.31, -0.42, 0.27};
+  const double r = std::sqrt(del[0] * del[0] + del[1] * del[1] + del[2] * del[2]);
+  const double w = std::pow(1.0 - r, 0.5);
+  etd::FpmFrictionPair p;
+  p.i = 0;
+  p.j = 1;
+  for (int k = 0; k < 3; k++) p.e[k] = static_cast<float>(del[k] / r);
+  p.half_r = static_cast<float>(0.5 * r);
+  p.central = static_cast<float>(c.gamma_c * w);
+  p.shear = static_cast<float>(c.gamma_s * w);
+  const std::vector<etd::FpmFrictionPair> pairs = {p};
+  auto all = [](int) { return true; };
+
+  std::vector<double> q(12), gq(12, 0.0);
+  for (double &value : q) value = normal(gen);
+  etd::accumulate_fpm_friction(pairs, q.data(), gq.data(), all);
+  // the kernel with the pair's (rounded) geometry
+  const double e[3] = {p.e[0], p.e[1], p.e[2]};
+  const double d[3] = {e[0] * 2 * p.half_r, e[1] * 2 * p.half_r, e[2] * 2 * p.half_r};
+  const double v_ij[3] = {q[0] - q[6], q[1] - q[7], q[2] - q[8]};
+  const double spin[3] = {q[3] + q[9], q[4] + q[10], q[5] + q[11]};
+  etd::FpmCoefficients exact = c;
+  const etd::FpmPairResult kernel = etd::fpm_pair(exact, d, 2 * p.half_r, v_ij, spin, etd::FpmNoise(), 1.0);
+  const double scale = p.central / kernel.central_friction;    // float rounding of gamma w
+  for (int k = 0; k < 3; k++) {
+    EXPECT_NEAR(gq[k], -kernel.dissipative[k] * scale, 1e-5 * std::fabs(kernel.dissipative[k]) + 1e-6);
+    EXPECT_NEAR(gq[6 + k], kernel.dissipative[k] * scale, 1e-5 * std::fabs(kernel.dissipative[k]) + 1e-6);
+    EXPECT_NEAR(gq[3 + k], -kernel.torque[k] * scale, 1e-5 * std::fabs(kernel.torque[k]) + 1e-6);
+    EXPECT_NEAR(gq[9 + k], -kernel.torque[k] * scale, 1e-5 * std::fabs(kernel.torque[k]) + 1e-6);
+  }
+  // symmetric and positive semidefinite
+  std::vector<double> y(12), gy(12, 0.0);
+  for (double &value : y) value = normal(gen);
+  etd::accumulate_fpm_friction(pairs, y.data(), gy.data(), all);
+  double q_gy = 0.0, y_gq = 0.0, q_gq = 0.0;
+  for (int k = 0; k < 12; k++) {
+    q_gy += q[k] * gy[k];
+    y_gq += y[k] * gq[k];
+    q_gq += q[k] * gq[k];
+  }
+  EXPECT_NEAR(q_gy, y_gq, 1e-12 * (std::fabs(q_gy) + 1.0));
+  EXPECT_GE(q_gq, 0.0);
+  // a rigid translation is not damped
+  std::vector<double> translation = {0.3, -1.2, 0.7, 0, 0, 0, 0.3, -1.2, 0.7, 0, 0, 0}, gt(12, 0.0);
+  etd::accumulate_fpm_friction(pairs, translation.data(), gt.data(), all);
+  for (double value : gt) EXPECT_NEAR(value, 0.0, 1e-12);
+  // the blocks are the diagonal 3x3 parts of G: probe them with unit vectors
+  std::vector<double> blocks(24, 0.0);
+  etd::accumulate_fpm_blocks(pairs, blocks.data(), all);
+  const int order[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+  for (int part = 0; part < 2; part++)
+    for (int b = 0; b < 6; b++) {
+      std::vector<double> unit(12, 0.0), column(12, 0.0);
+      unit[3 * part + order[b][1]] = 1.0;
+      etd::accumulate_fpm_friction(pairs, unit.data(), column.data(), all);
+      EXPECT_NEAR(blocks[6 * part + b], column[3 * part + order[b][0]], 1e-6) << part << " " << b;
+    }
 }
