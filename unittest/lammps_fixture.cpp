@@ -180,4 +180,19 @@ int world_size()
   return s;
 }
 
+std::vector<double> on_ranks(int ranks, const std::function<std::vector<double>(Lammps &)> &body)
+{
+  MPI_Comm comm;
+  const int rank = world_rank();
+  MPI_Comm_split(MPI_COMM_WORLD, rank < ranks ? 0 : MPI_UNDEFINED, rank, &comm);
+  std::vector<double> result;
+  if (comm != MPI_COMM_NULL) {
+    Lammps l(comm);
+    result = body(l);
+    MPI_Comm_free(&comm);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  return result;
+}
+
 }    // namespace etdtest

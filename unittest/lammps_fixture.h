@@ -4,6 +4,7 @@
 
 #include <mpi.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,10 @@ void write_random_sphere_data(const std::string &path, int natoms, double L, uns
 std::string work_file(const std::string &name);    // a path in the test's build folder
 int world_rank();
 int world_size();
+// Runs body with a LAMMPS instance on the first `ranks` world ranks (the others wait); returns
+// what body returned there (what it gathered, on world rank 0). For rank-count comparisons in
+// one MPI program.
+std::vector<double> on_ranks(int ranks, const std::function<std::vector<double>(Lammps &)> &body);
 
 }    // namespace etdtest
 

@@ -76,21 +76,6 @@ double max_abs_diff(const std::vector<double> &a, const std::vector<double> &b)
   return worst;
 }
 
-std::vector<double> on_ranks(int ranks, const std::function<std::vector<double>(Lammps &)> &body)
-{
-  MPI_Comm comm;
-  const int rank = etdtest::world_rank();
-  MPI_Comm_split(MPI_COMM_WORLD, rank < ranks ? 0 : MPI_UNDEFINED, rank, &comm);
-  std::vector<double> result;
-  if (comm != MPI_COMM_NULL) {
-    Lammps l(comm);
-    result = body(l);
-    MPI_Comm_free(&comm);
-  }
-  MPI_Barrier(MPI_COMM_WORLD);
-  return result;
-}
-
 }    // namespace
 
 TEST(TCurrent, SinusoidalVelocityFieldGivesHalfNAtItsWaveNumberOnly)
@@ -153,7 +138,7 @@ TEST(TCurrent, MatchesDirectSumOnAnyRankCount)
   std::vector<std::vector<double>> results;
   for (int ranks : {1, 2, 4}) {
     if (ranks > etdtest::world_size()) break;
-    results.push_back(on_ranks(ranks, [&](Lammps &l) {
+    results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
       l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + DATA,
               "mass * 1.0", "pair_style dpd/gen 1.0 1.0 77", "pair_coeff 1 1 25 4.5 0.5",
               "fix 1 all nve", "timestep 0.01", "compute J all dpd/tcurrent " + std::to_string(K),

@@ -8,11 +8,9 @@
 #include "lammps_fixture.h"
 
 #include <gtest/gtest.h>
-#include <mpi.h>
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 
 using etdtest::Lammps;
 
@@ -96,23 +94,14 @@ TEST(FpmImplicit, TrajectoryAgreesAcrossRankCounts)
   etdtest::write_random_sphere_data(DATA, 648, 6.0, 4711, 1, 1.5, 2.0, 1.0);
   std::vector<std::vector<double>> results;
   for (const std::string newton : {"on", "off"})
-    for (int ranks : {1, 2, 4}) {
-      MPI_Comm comm;
-      const int rank = etdtest::world_rank();
-      MPI_Comm_split(MPI_COMM_WORLD, rank < ranks ? 0 : MPI_UNDEFINED, rank, &comm);
-      std::vector<double> result;
-      if (comm != MPI_COMM_NULL) {
-        Lammps l(comm);
+    for (int ranks : {1, 2, 4})
+      results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
         l.cmds({"newton " + newton});
         l.cmds(sphere_fluid(DATA, 0.01));
         l.cmds({"pair_style dpd/fpm 1.0 1.0 77", "pair_coeff 1 1 25 4.5 4.5 0.5", "timestep 0.003",
                 "fix 1 all etd scheme implicit tol 1e-10", "run 5 post no"});
-        result = state(l);
-        MPI_Comm_free(&comm);
-      }
-      MPI_Barrier(MPI_COMM_WORLD);
-      results.push_back(result);
-    }
+        return state(l);
+      }));
   if (etdtest::world_rank() != 0) return;
   for (size_t k = 1; k < results.size(); k++)
     EXPECT_LT(max_rel_diff(results[k], results[0]), 1e-7) << "variant " << k;

@@ -304,24 +304,11 @@ TEST(PairDpdFpm, ForcesAndTorquesAgreeAcrossRankCountsAndNewton)
   // off; 1,500 spheres read from a data file, compared after 5 steps of fix nve/sphere
   const std::string data = etdtest::work_file("dpd_fpm_ranks.data");
   etdtest::write_random_sphere_data(data, 1500, 8.0, 99, 2, 1.0, 1.0, 1.0);
-  auto on_ranks = [](int ranks, const std::function<std::vector<double>(Lammps &)> &body) {
-    MPI_Comm comm;
-    const int rank = etdtest::world_rank();
-    MPI_Comm_split(MPI_COMM_WORLD, rank < ranks ? 0 : MPI_UNDEFINED, rank, &comm);
-    std::vector<double> result;
-    if (comm != MPI_COMM_NULL) {
-      Lammps l(comm);
-      result = body(l);
-      MPI_Comm_free(&comm);
-    }
-    MPI_Barrier(MPI_COMM_WORLD);
-    return result;
-  };
   std::vector<std::vector<double>> results;
   for (const std::string newton : {"on", "off"})
     for (int ranks : {1, 2, 4}) {
       if (ranks > etdtest::world_size()) continue;
-      results.push_back(on_ranks(ranks, [&](Lammps &l) {
+      results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
         l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "newton " + newton,
                 "comm_modify vel yes", "read_data " + data, "set group all mass 1.0",
                 "timestep 0.005", "pair_style dpd/fpm 1.0 1.0 2718",

@@ -20,22 +20,6 @@ double max_abs_diff(const std::vector<double> &a, const std::vector<double> &b)
   return worst;
 }
 
-// Runs body on the first `ranks` world ranks; returns what it gathered (on world rank 0).
-std::vector<double> on_ranks(int ranks, const std::function<std::vector<double>(Lammps &)> &body)
-{
-  MPI_Comm comm;
-  const int rank = etdtest::world_rank();
-  MPI_Comm_split(MPI_COMM_WORLD, rank < ranks ? 0 : MPI_UNDEFINED, rank, &comm);
-  std::vector<double> result;
-  if (comm != MPI_COMM_NULL) {
-    Lammps l(comm);
-    result = body(l);
-    MPI_Comm_free(&comm);
-  }
-  MPI_Barrier(MPI_COMM_WORLD);
-  return result;
-}
-
 std::vector<std::string> fluid(const std::string &newton)
 {
   return {"units lj", "atom_modify map array", "newton " + newton, "comm_modify vel yes",
@@ -60,7 +44,7 @@ TEST_F(Ranks, ForcesAgreeAcrossRankCountsAndNewton)
   std::vector<std::vector<double>> results;
   for (const std::string newton : {"on", "off"})
     for (int ranks : {1, 2, 4})
-      results.push_back(on_ranks(ranks, [&](Lammps &l) {
+      results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
         l.cmds(fluid(newton));
         l.cmds({"compute split all dpd/split", "run 0 post no"});
         auto f = l.gather("f");
@@ -80,7 +64,7 @@ TEST_F(Ranks, EtdTrajectoryAgreesAcrossRankCounts)
   std::vector<std::vector<double>> results;
   for (const std::string order : {"1", "2"})
     for (int ranks : {1, 2, 4})
-      results.push_back(on_ranks(ranks, [&](Lammps &l) {
+      results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
         l.cmds(fluid("on"));
         l.cmds({"fix 1 all etd order " + order, "run 20 post no"});
         auto x = l.gather("x");
@@ -110,7 +94,7 @@ TEST_F(Ranks, ImplicitTrajectoryAgreesAcrossRankCountsToSolverTolerance)
   for (const std::string variant : {"", " overdamped yes"})
     for (const std::string newton : {"on", "off"})
       for (int ranks : {1, 2, 4})
-        results.push_back(on_ranks(ranks, [&](Lammps &l) {
+        results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
           l.cmds(fluid(newton));
           l.cmds({"fix 1 all etd scheme implicit tol 1e-10" + variant, "run 5 post no"});
           auto v = l.gather("v");

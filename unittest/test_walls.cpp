@@ -20,22 +20,6 @@ double max_abs_diff(const std::vector<double> &a, const std::vector<double> &b)
   return worst;
 }
 
-// Runs body on the first `ranks` world ranks; returns what it gathered (on world rank 0).
-std::vector<double> on_ranks(int ranks, const std::function<std::vector<double>(Lammps &)> &body)
-{
-  MPI_Comm comm;
-  const int rank = etdtest::world_rank();
-  MPI_Comm_split(MPI_COMM_WORLD, rank < ranks ? 0 : MPI_UNDEFINED, rank, &comm);
-  std::vector<double> result;
-  if (comm != MPI_COMM_NULL) {
-    Lammps l(comm);
-    result = body(l);
-    MPI_Comm_free(&comm);
-  }
-  MPI_Barrier(MPI_COMM_WORLD);
-  return result;
-}
-
 // An empty 10^3 box for hand-built atoms, no forces.
 void empty_box(Lammps &l)
 {
@@ -229,7 +213,7 @@ TEST(Walls, TrajectoriesAgreeAcrossRankCounts)
   etdtest::write_random_data(DATA, 1500, 7.2, 4242, 1, 1.0);
   std::vector<std::vector<double>> results;
   for (int ranks : {1, 2, 4})
-    results.push_back(on_ranks(ranks, [&](Lammps &l) {
+    results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
       l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + DATA,
               "mass 1 0.01", "timestep 0.001", "pair_style dpd/gen 1.0 1.0 2718",
               "pair_coeff 1 1 18.75 4.5 0.5", "fix 1 all etd",
