@@ -221,18 +221,20 @@ void PairDPDFPM::compute(int eflag, int vflag)
   }
 
   if (conservative_only) {
-    if (evflag) eval_conservative<1>(); else eval_conservative<0>();
+    if (evflag) eval<1, 0, 0>(); else eval<0, 0, 0>();
   } else if (evflag) {
-    if (extras) eval<1, 1>(); else eval<1, 0>();
+    if (extras) eval<1, 1, 1>(); else eval<1, 0, 1>();
   } else {
-    if (extras) eval<0, 1>(); else eval<0, 0>();
+    if (extras) eval<0, 1, 1>(); else eval<0, 0, 1>();
   }
 
   if (extras && force->newton_pair) etd::compat::reverse_comm(comm, this);
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
-template <int EVFLAG, int EXTRAS> void PairDPDFPM::eval()
+// DISSIPATIVE = 0: only the central conservative force a (1 - r/rc) e, which makes no torque:
+// what the implicit scheme of fix etd leaves to the pair style (it applies friction and noise)
+template <int EVFLAG, int EXTRAS, int DISSIPATIVE> void PairDPDFPM::eval()
 {
   double **x = atom->x;
   double **v = atom->v;
@@ -278,6 +280,17 @@ template <int EVFLAG, int EXTRAS> void PairDPDFPM::eval()
       const double r = std::sqrt(rsq);
       if (r < EPSILON) continue;
       const etd::FpmCoefficients &c = crow[jtype];
+      if (!DISSIPATIVE) {
+        const double fpair = factor * c.a * (1.0 - r * c.inv_rc) / r;
+        for (int k = 0; k < 3; k++) fi[k] += del[k] * fpair;
+        if (newton_pair || j < nlocal)
+          for (int k = 0; k < 3; k++) f[j][k] -= del[k] * fpair;
+        if (EVFLAG) {
+          const double evdwl = eflag_either ? etd::fpm_energy(c, r, factor) : 0.0;
+          ev_tally(i, j, nlocal, newton_pair, evdwl, 0.0, fpair, del[0], del[1], del[2]);
+        }
+        continue;
+      }
 
       const double v_ij[3] = {vi[0] - v[j][0], vi[1] - v[j][1], vi[2] - v[j][2]};
       const double omega_sum[3] = {omegai[0] + omega[j][0], omegai[1] + omega[j][1],
@@ -341,54 +354,6 @@ template <int EVFLAG, int EXTRAS> void PairDPDFPM::eval()
         friction[i][k] += gi[k];
         rot_friction[i][k] += gri[k];
       }
-  }
-}
-
-// Only the central conservative force a (1 - r/rc) e, which makes no torque: what the implicit
-// scheme of fix etd leaves to the pair style (it applies friction and noise itself).
-template <int EVFLAG> void PairDPDFPM::eval_conservative()
-{
-  double **x = atom->x;
-  double **f = atom->f;
-  const int *type = atom->type;
-  const int nlocal = atom->nlocal;
-  const double *special_lj = force->special_lj;
-  const int newton_pair = force->newton_pair;
-  const int inum = list->inum;
-  const int *ilist = list->ilist;
-  const int *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
-
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    const int itype = type[i];
-    const etd::FpmCoefficients *crow = &coeffs[itype * stride];
-    const double *cutsqi = cutsq[itype];
-    const int *jlist = firstneigh[i];
-    const int jnum = numneigh[i];
-    const double xi[3] = {x[i][0], x[i][1], x[i][2]};
-    double fi[3] = {0.0, 0.0, 0.0};
-    for (int jj = 0; jj < jnum; jj++) {
-      int j = jlist[jj];
-      const double factor = special_lj[sbmask(j)];
-      j &= NEIGHMASK;
-      const double del[3] = {xi[0] - x[j][0], xi[1] - x[j][1], xi[2] - x[j][2]};
-      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
-      const int jtype = type[j];
-      if (rsq >= cutsqi[jtype]) continue;
-      const double r = std::sqrt(rsq);
-      if (r < EPSILON) continue;
-      const etd::FpmCoefficients &c = crow[jtype];
-      const double fpair = factor * c.a * (1.0 - r * c.inv_rc) / r;
-      for (int k = 0; k < 3; k++) fi[k] += del[k] * fpair;
-      if (newton_pair || j < nlocal)
-        for (int k = 0; k < 3; k++) f[j][k] -= del[k] * fpair;
-      if (EVFLAG) {
-        const double evdwl = eflag_either ? etd::fpm_energy(c, r, factor) : 0.0;
-        ev_tally(i, j, nlocal, newton_pair, evdwl, 0.0, fpair, del[0], del[1], del[2]);
-      }
-    }
-    for (int k = 0; k < 3; k++) f[i][k] += fi[k];
   }
 }
 

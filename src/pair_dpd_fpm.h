@@ -66,8 +66,7 @@ class PairDPDFPM : public Pair, public etd::DpdExtrasProvider {
 
   void allocate();
   void grow_extras();
-  template <int EVFLAG, int EXTRAS> void eval();
-  template <int EVFLAG> void eval_conservative();
+  template <int EVFLAG, int EXTRAS, int DISSIPATIVE> void eval();
 };
 
 }    // namespace LAMMPS_NS
