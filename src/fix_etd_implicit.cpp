@@ -34,14 +34,15 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
+
 FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), overdamped(false), tolerance(1e-6), max_iterations(200), dt(0.0),
+    Fix(lmp, narg, arg), overdamped(false), midpoint(true), tolerance(1e-6), max_iterations(200), dt(0.0),
     list(nullptr), dofs(3), any_fixed_partner(false), comm_vector(nullptr), comm_width(3), last_iterations(0),
-    last_residual(0.0), iterations_sum(0.0), solves(0)
+    last_residual(0.0), iterations_sum(0.0), solves(0), predictor_steps(0)
 {
   time_integrate = 1;
   vector_flag = 1;
-  size_vector = 3;
+  size_vector = 4;
   extvector = 0;
   global_freq = 1;
   comm_forward = 6;     // 3 values per atom, 6 with rotation
@@ -63,6 +64,10 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
       tolerance = utils::numeric(FLERR, value.c_str(), false, lmp);
       if (!(tolerance > 0.0 && tolerance < 1.0))
         error->all(FLERR, "Illegal fix etd command: tol must be between 0 and 1, got {}", value);
+    } else if (key == "midpoint") {
+      if (value == "yes") midpoint = true;
+      else if (value == "no") midpoint = false;
+      else error->all(FLERR, "Illegal fix etd command: midpoint must be yes or no, got {}", value);
     } else if (key == "maxiter") {
       max_iterations = utils::inumeric(FLERR, value.c_str(), false, lmp);
       if (max_iterations < 1)
@@ -202,7 +207,6 @@ void FixETDImplicit::initial_integrate(int)
 {
   if (overdamped) {
     overdamped_step();
-    drift(1.0);
     return;
   }
   kick(0.5);
@@ -359,8 +363,8 @@ void FixETDImplicit::random_impulse(double scale, std::vector<double> &impulse)
 // (mass_weight M + friction_weight G) x = rhs over the group's atoms on this rank, atoms
 // outside the group held at zero (their velocities are already in rhs). With 'deflate' the
 // uniform translation (null space of G) is projected out of rhs and of the solution.
-void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double> &solution,
-                           double mass_weight, double friction_weight, bool deflate)
+bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double> &solution,
+                           double mass_weight, double friction_weight, bool deflate, bool singular_ok)
 {
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
@@ -449,17 +453,20 @@ void FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
   solves++;
   // without inertia a failed solve means a (nearly) singular G: an atom has lost its DPD
   // partners in some direction, so its mobility there is unbounded; moving it would throw it
-  // out of the box
-  if (!result.converged && mass_weight == 0.0)
+  // out of the box. The overdamped step decides what to do (singular_ok).
+  if (!result.converged && mass_weight == 0.0) {
+    if (singular_ok) return false;
     error->all(FLERR, "Fix etd overdamped yes: conjugate gradients did not converge ({} iterations, "
                "relative residual {:.3g}): the friction system is nearly singular (an atom without "
-               "DPD partners in some direction). Use a smaller timestep, a larger dissipative cutoff, "
-               "or the inertial implicit scheme with a small mass",
+               "DPD partners in some direction). Start from an equilibrated configuration, use a "
+               "smaller timestep, or the inertial implicit scheme with a small mass",
                result.iterations, result.relative_residual);
+  }
   if (!result.converged && comm->me == 0)
     error->warning(FLERR, "Fix etd scheme implicit: conjugate gradients stopped after {} "
                    "iterations at relative residual {:.3g} (tol {:.3g}); raise maxiter or the step",
                    result.iterations, result.relative_residual, tolerance);
+  return result.converged;
 }
 
 void FixETDImplicit::friction_noise_step()
@@ -510,32 +517,77 @@ void FixETDImplicit::friction_noise_step()
       for (int k = 0; k < dofs; k++) *dof_pointer(i, k) = solution[dofs * i + k] + (k < 3 ? shift[k] : 0.0);
 }
 
-void FixETDImplicit::overdamped_step()
+// Solves G v = F + B xi / sqrt(h) - G v_fixed at the current pair geometry, with the given
+// random impulse (translation only: init() refuses rotation here).
+bool FixETDImplicit::overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity,
+                                      bool singular_ok)
 {
-  build_pairs();
   double **v = atom->v;
   double **f = atom->f;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-
-  // G v = F + B xi / sqrt(h) - G v_fixed (translation only: init() refuses rotation here)
-  std::vector<double> &u = work.u, &gu = work.gu_rhs, &rhs = work.step_rhs, &impulse = work.impulse;
+  std::vector<double> &u = work.u, &gu = work.gu_rhs, &rhs = work.step_rhs;
   u.assign(3 * nlocal, 0.0);
   rhs.resize(3 * nlocal);
   for (int i = 0; i < nlocal; i++)
     if (!(mask[i] & groupbit))
       for (int k = 0; k < 3; k++) u[3 * i + k] = v[i][k];
   apply_friction(u.data(), gu, false);
-  random_impulse(1.0 / std::sqrt(dt), impulse);
   for (int i = 0; i < nlocal; i++)
     for (int k = 0; k < 3; k++) rhs[3 * i + k] = f[i][k] + impulse[3 * i + k] - gu[3 * i + k];
-  std::vector<double> &solution = work.solution;
   // without a fixed partner nothing sets the mean velocity: G is singular in the translation,
   // which is removed (the group's mean velocity is zero)
-  solve(rhs, solution, 0.0, 1.0, !any_fixed_partner);
+  return solve(rhs, velocity, 0.0, 1.0, !any_fixed_partner, singular_ok);
+}
+
+// The zero-mass step as a midpoint (Fixman) scheme: a predictor solve at x_n moves the atoms
+// half a step, the corrector solves again with G at that midpoint and the same random impulse
+// B(x_n) xi, and x_(n+1) = x_n + h v. Evaluating the mobility G^-1 at the midpoint supplies the
+// drift kBT div(G^-1) of Brownian motion with a configuration-dependent mobility, which a
+// single solve at x_n (the Euler-Maruyama update) leaves out. The force F stays the one of x_n.
+// A configuration where an atom has almost no partner across some direction makes G nearly
+// singular (its mobility there unbounded): at the predictor that is an error (solve()); where
+// the predictor has carried an atom into a singular midpoint configuration, the step keeps the
+// predictor's velocity, which is counted (the fix's output).
+void FixETDImplicit::overdamped_step()
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double h = dt;
+
+  build_pairs();
+  std::vector<double> &impulse = work.impulse, &predicted = work.predicted, &solution = work.solution;
+  random_impulse(1.0 / std::sqrt(h), impulse);
+  impulse.resize(3 * nlocal);    // owned atoms' share, kept for the corrector
+  overdamped_solve(impulse, predicted, false);
+  if (!midpoint) {    // the single-solve (Euler-Maruyama) update, for comparison
+    for (int i = 0; i < nlocal; i++)
+      if (mask[i] & groupbit)
+        for (int k = 0; k < 3; k++) {
+          x[i][k] += h * predicted[3 * i + k];
+          v[i][k] = predicted[3 * i + k];
+        }
+    return;
+  }
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
-      for (int k = 0; k < 3; k++) v[i][k] = solution[3 * i + k];
+      for (int k = 0; k < 3; k++) x[i][k] += 0.5 * h * predicted[3 * i + k];
+  comm->forward_comm();    // ghosts at the midpoint too
+
+  build_pairs();
+  const bool corrected = overdamped_solve(impulse, solution, true);
+  if (!corrected) {
+    solution = predicted;
+    predictor_steps++;
+  }
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit)
+      for (int k = 0; k < 3; k++) {
+        x[i][k] += h * solution[3 * i + k] - 0.5 * h * predicted[3 * i + k];
+        v[i][k] = solution[3 * i + k];
+      }
 }
 
 /* ---- output and communication ---------------------------------------------------------- */
@@ -544,7 +596,8 @@ double FixETDImplicit::compute_vector(int n)
 {
   if (n == 0) return last_iterations;
   if (n == 1) return last_residual;
-  return solves ? iterations_sum / solves : 0.0;
+  if (n == 2) return solves ? iterations_sum / solves : 0.0;
+  return predictor_steps;
 }
 
 int FixETDImplicit::pack_forward_comm(int n, int *list_, double *buf, int, int *)

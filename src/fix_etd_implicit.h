@@ -36,6 +36,7 @@ class FixETDImplicit : public Fix {
 
  private:
   bool overdamped;
+  bool midpoint;    // overdamped: predictor-corrector (default) or a single solve
   double tolerance;
   int max_iterations;
   double dt;
@@ -60,7 +61,7 @@ class FixETDImplicit : public Fix {
   // work vectors reused from step to step (per-step allocation costs page faults at scale)
   struct Work {
     std::vector<double> masses, rhs, inv_diag, block_inverse, gu;    // solve()
-    std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia;    // the steps
+    std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia, predicted;    // the steps
     etd::CgWorkspace cg;
   } work;
 
@@ -68,6 +69,7 @@ class FixETDImplicit : public Fix {
   double last_residual;
   double iterations_sum;
   long solves;
+  long predictor_steps;    // overdamped steps that kept the predictor (singular midpoint)
 
   void kick(double fraction);
   void drift(double fraction);
@@ -80,8 +82,9 @@ class FixETDImplicit : public Fix {
   void apply_friction(const double *u, std::vector<double> &gu, bool group_only);
   void friction_noise_step();
   void overdamped_step();
-  void solve(const std::vector<double> &rhs, std::vector<double> &solution, double mass_weight,
-             double friction_weight, bool deflate);
+  bool overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity, bool singular_ok);
+  bool solve(const std::vector<double> &rhs, std::vector<double> &solution, double mass_weight,
+             double friction_weight, bool deflate, bool singular_ok = false);
 };
 
 }    // namespace LAMMPS_NS
