@@ -188,3 +188,24 @@ TEST(FixEtd, BadInputGivesClearErrors)
         << "commands ending '" << c.commands.back() << "' gave: '" << message << "'";
   }
 }
+
+TEST(FixEtd, HybridOverlayWithAnotherStyleMatchesThePlainStyle)
+{
+  // Inside pair hybrid/overlay fix etd must find dpd/gen's friction; a `zero` sub-style adds no
+  // force, so the trajectory equals the plain dpd/gen one (same noise keys) to round-off. The
+  // second sub-style's forces would enter as explicit forcing.
+  std::vector<double> v_plain, v_hybrid;
+  for (int hybrid = 0; hybrid < 2; hybrid++) {
+    Lammps l;
+    fluid(l, "pair_coeff 1 1 18.75 4.5 0.5");
+    if (hybrid)
+      l.cmds({"pair_style hybrid/overlay dpd/gen 1.0 1.0 555 zero 1.0",
+              "pair_coeff 1 1 dpd/gen 18.75 4.5 0.5", "pair_coeff 1 1 zero"});
+    l.cmds({"timestep 0.001", "fix 1 all etd order 2", "run 20 post no"});
+    (hybrid ? v_hybrid : v_plain) = l.gather("v");
+  }
+  double scale = 0.0;
+  for (double v : v_plain) scale = std::max(scale, std::fabs(v));
+  EXPECT_GT(scale, 1.0);
+  EXPECT_LT(max_abs_diff(v_plain, v_hybrid), 1e-10 * scale);
+}
