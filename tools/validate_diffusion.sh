@@ -12,8 +12,8 @@ time_units=${1:-4}
 out="$here/out/validation_diffusion"; mkdir -p "$out"
 rows=()
 run() {    # mass dt integrator [measured eta]
-  local dir="$out/m$1"; mkdir -p "$dir"
-  (cd "$dir" && "$prefix/bin/lmp" -in "$here/validation/in.diffusion" -var plugin "$here/build/etddpd.so" \
+  local dir="$out/m$1_${3%% *}_$2"; mkdir -p "$dir"
+  (cd "$dir" && "$prefix/bin/lmp" -in "$here/validation/in.diffusion" -var plugin "${ETDDPD_PLUGIN:-$here/build/etddpd.so}" \
     -var mass "$1" -var dt "$2" -var integrator "$3" -var time "$time_units" -log log.lammps -screen none)
   grep RESULT "$dir/log.lammps" | tail -1
   rows+=("$dir:$1:$2:$3:${4:-}")
@@ -22,6 +22,9 @@ run 1.0 0.01 nve
 run 0.1 0.002 nve
 run 0.01 0.002 "etd scheme implicit" 1.948
 run 0.001 0.0005 "etd scheme implicit" 1.909
+# the paper's diagonal scheme at a step that resolves m/gamma, as the paper ran it
+run 0.01 0.0005 etd 1.948
+run 0.001 0.00005 etd 1.909
 {
   echo "# Self-diffusion and Schmidt number against mass"
   echo
