@@ -138,7 +138,7 @@ def main():
         t, terr, nb = torque(path)
         stokes = -8 * math.pi * PAPER_MU * float(omega) * PAPER_R ** 3
         rows.append((f'torque T / (-8 pi mu Omega R^3), {label}, Omega = {float(omega):g}, {nb} blocks',
-                     '1 (within 1.3 %)', f'{t / stokes:.3f} +- {terr / stokes:.3f}',
+                     '1 (within 1.3 %)', f'{t / stokes:.3f} +- {terr / abs(stokes):.3f}',
                      f'T = {t:.3f} +- {terr:.3f}, Stokes {stokes:.3f}'))
     print('| quantity | paper | this package | difference |')
     print('|---|---|---|---|')
