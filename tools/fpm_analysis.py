@@ -97,6 +97,9 @@ def main():
     ap.add_argument('--omega', type=float, default=-2.0)
     ap.add_argument('--frame', type=float, default=0.5, help='time between track frames')
     ap.add_argument('--fit', type=float, nargs=2, default=(5.0, 25.0))
+    ap.add_argument('--torque', nargs=3, action='append', default=[], metavar=('LABEL', 'FILE', 'OMEGA'),
+                    help='extra torque block file (e.g. a time-step scan) to report against Stokes with the '
+                         "paper's mu and R; repeatable")
     a = ap.parse_args()
     rows = []
     mu = PAPER_MU
@@ -131,6 +134,12 @@ def main():
         rows.append(('same, with the mu and R measured here', '1', f'{t / stokes_ours:.3f} +- {terr / stokes_ours:.3f}',
                      f'Stokes {stokes_ours:.3f}'))
         print(f'# torque: {nb} blocks')
+    for label, path, omega in a.torque:
+        t, terr, nb = torque(path)
+        stokes = -8 * math.pi * PAPER_MU * float(omega) * PAPER_R ** 3
+        rows.append((f'torque T / (-8 pi mu Omega R^3), {label}, Omega = {float(omega):g}, {nb} blocks',
+                     '1 (within 1.3 %)', f'{t / stokes:.3f} +- {terr / abs(stokes):.3f}',
+                     f'T = {t:.3f} +- {terr:.3f}, Stokes {stokes:.3f}'))
     print('| quantity | paper | this package | difference |')
     print('|---|---|---|---|')
     for r in rows:

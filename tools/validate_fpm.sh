@@ -6,7 +6,11 @@
 # lengths are not known, see doc/pair_dpd_fpm.rst. Results: out/fpm/results.md.
 #
 #   tools/validate_fpm.sh [lammps executable]
-# Environment: FPM_STEPS_SCALE (default 1) multiplies every production length.
+# Environment: FPM_STEPS_SCALE (default 1) multiplies every production length;
+# FPM_TORQUE_SCAN=1 adds short rotating-sphere runs (100 time units each, Omega = -6 unless
+# stated) that separate the time step, the sign and size of Omega, the fluid's moment of inertia
+# (fluid diameter 2; diameter 0.5 is unstable at dt = 0.01) and the neighbour-list delay
+# (about 10 CPU-minutes in all).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 lmp=${1:-}
@@ -30,4 +34,23 @@ run viscosity 20000 &
 run diffusion 50000 &
 wait
 run rotating_sphere 60000
-/usr/bin/python3 "$here/tools/fpm_analysis.py" "$out" | tee "$out/results.md"
+scan_args=()
+if [[ "${FPM_TORQUE_SCAN:-0}" == 1 ]]; then
+  scan() {    # label Omega dt fluid_diameter neigh_delay
+    local name="scan_$1" per_unit
+    per_unit=$(awk -v dt="$3" 'BEGIN { printf "%d", 1 / dt }')
+    echo "running $name"
+    nice -n 10 "$lmp" -in "$here/validation/fpm/in.fpm_rotating_sphere" "${common[@]}" -var out "$name" \
+      -var Omega "$2" -var dt "$3" -var fluid_diameter "$4" -var neigh_delay "$5" \
+      -var equil $(( 20 * per_unit )) -var steps $(( 100 * per_unit * scale )) -log "log.$name" >/dev/null
+    scan_args+=(--torque "$1 (dt $3, fluid diameter $4, neigh_modify delay $5)" "$name.torque" "$2")
+  }
+  scan reference -6.0 0.01 1.0 0
+  scan delay10 -6.0 0.01 1.0 10
+  scan dt0.005 -6.0 0.005 1.0 0
+  scan dt0.0025 -6.0 0.0025 1.0 0
+  scan reversed 6.0 0.01 1.0 0
+  scan omega12 -12.0 0.01 1.0 0
+  scan inertia -6.0 0.01 2.0 0
+fi
+/usr/bin/python3 "$here/tools/fpm_analysis.py" "$out" "${scan_args[@]}" | tee "$out/results.md"
