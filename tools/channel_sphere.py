@@ -51,7 +51,10 @@ def read_ave_time(path):
                     names = words
                 continue
             if line.strip():
-                rows.append([float(w) for w in line.split()])
+                try:
+                    rows.append([float(w) for w in line.split()])
+                except ValueError:
+                    sys.exit(f'channel_sphere: {path} is not a fix ave/time file: {line.strip()!r}')
     if names is None or not rows:
         sys.exit(f'channel_sphere: {path} is not a fix ave/time file with data')
     data = np.array(rows)
