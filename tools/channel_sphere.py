@@ -9,7 +9,7 @@ groups the rest into --batches batch means and takes the standard error over the
 
   F_D  = mean x force on the sphere; by default the conservative plus dissipative part when the
          file has it (the random part has mean zero exactly and only adds noise), else the total
-  U    = mean fluid velocity along x (the sphere is at rest)
+  U    = mean fluid velocity along x (the sphere is at rest), or --U
   Re   = rho U d / eta,    C_D = 8 F_D / (pi d^2 rho U^2)
 
 against Stokes (24/Re) and Brown and Lawler's correlation
@@ -98,6 +98,8 @@ def analyse(path, args):
     drag, drag_err = batch_mean(drag_series, args.batches)
     total_mean, total_err = batch_mean(total, args.batches)
     u, u_err = batch_mean(velocity, args.batches)
+    if args.U is not None:          # a set reference velocity (e.g. the wall speed), no error
+        u, u_err = args.U, 0.0
     re = args.rho * u * args.d / args.eta
     re_err = re * u_err / u
     cd = 8.0 * drag / (math.pi * args.d**2 * args.rho * u * u)
@@ -254,6 +256,9 @@ def main(argv=None):
     drag.add_argument('--rho', type=float, default=4.0, help='mass density of the fluid')
     drag.add_argument('--d', type=float, default=3.0, help='sphere diameter')
     drag.add_argument('--eta', type=float, default=1.083, help='dynamic viscosity')
+    drag.add_argument('--U', type=float,
+                      help='reference velocity instead of the mean fluid velocity (e.g. the '
+                           'wall speed of in.sphere_shear)')
     drag.add_argument('--force', choices=['split', 'total'], default='split',
                       help='drag estimator: conservative + dissipative part (default, when the '
                            'file has the split) or the total force')
