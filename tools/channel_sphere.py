@@ -1,0 +1,286 @@
+#!/usr/bin/python3
+"""Drag on a sphere in the channel examples (examples/channel-sphere): Re, C_D and their errors.
+
+Reads the fix ave/time files the examples write (one row per block of steps: the x, y, z force
+of the fluid on the sphere, the mean fluid velocity along x relative to the sphere, the fluid
+temperature and, with pair dpd/gen, the conservative, dissipative and random parts of the x
+force). Drops the first --discard fraction of the rows (the flow around the sphere develops),
+groups the rest into --batches batch means and takes the standard error over the batches.
+
+  F_D  = mean x force on the sphere; by default the conservative plus dissipative part when the
+         file has it (the random part has mean zero exactly and only adds noise), else the total
+  U    = mean fluid velocity along x (the sphere is at rest), or --U
+  Re   = rho U d / eta,    C_D = 8 F_D / (pi d^2 rho U^2)
+
+against Stokes (24/Re) and Brown and Lawler's correlation
+C_D = 24/Re (1 + 0.150 Re^0.681) + 0.407 / (1 + 8710/Re).
+
+  tools/channel_sphere.py drag examples/channel-sphere/drag.U*           # table
+  tools/channel_sphere.py drag --series "rigid:drag.U0.5,drag.U0.9" --series "..." --png cd.png
+  tools/channel_sphere.py radius wall_radius.H2 ...                     # compliant walls
+
+Defaults: rho = 4 (n = 4, m = 1), d = 3, eta = 1.083 (kinetic theory of standard DPD with
+a = 18.75, gamma = 4.5, kBT = 1, n = 4, rc = 1: 0.796 kinetic + 0.287 dissipative).
+"""
+import argparse
+import json
+import math
+import sys
+
+import numpy as np
+
+
+def correlation_cd(re):
+    """Brown and Lawler's drag correlation for a sphere in unbounded uniform flow."""
+    re = np.asarray(re, dtype=float)
+    return 24.0 / re * (1.0 + 0.150 * re**0.681) + 0.407 / (1.0 + 8710.0 / re)
+
+
+def stokes_cd(re):
+    return 24.0 / np.asarray(re, dtype=float)
+
+
+def read_ave_time(path):
+    """(column names, array[row, column]) of a fix ave/time file in scalar/vector mode."""
+    names, rows = None, []
+    with open(path) as f:
+        for line in f:
+            if line.startswith('#'):
+                words = line[1:].split()
+                if words and words[0] == 'TimeStep':
+                    names = words
+                continue
+            if line.strip():
+                try:
+                    rows.append([float(w) for w in line.split()])
+                except ValueError:
+                    sys.exit(f'channel_sphere: {path} is not a fix ave/time file: {line.strip()!r}')
+    if names is None or not rows:
+        sys.exit(f'channel_sphere: {path} is not a fix ave/time file with data')
+    data = np.array(rows)
+    if data.shape[1] != len(names):
+        sys.exit(f'channel_sphere: {path}: {data.shape[1]} columns, header names {len(names)}')
+    return names, data
+
+
+def batch_mean(values, batches):
+    """Mean and its standard error from `batches` contiguous batch means."""
+    values = np.asarray(values, dtype=float)
+    batches = max(2, min(batches, len(values)))
+    usable = len(values) - len(values) % batches
+    means = values[len(values) - usable:].reshape(batches, -1).mean(axis=1)
+    return float(means.mean()), float(means.std(ddof=1) / math.sqrt(batches))
+
+
+def column(names, data, *candidates):
+    for name in candidates:
+        if name in names:
+            return data[:, names.index(name)]
+    return None
+
+
+def analyse(path, args):
+    names, data = read_ave_time(path)
+    start = int(round(args.discard * len(data)))
+    data = data[start:]
+    if len(data) < 2 * args.batches:
+        sys.exit(f'channel_sphere: {path}: only {len(data)} rows after discarding, '
+                 f'need at least {2 * args.batches}')
+    total = data[:, 1]
+    conservative = column(names, data, 'c_split[1]')
+    dissipative = column(names, data, 'c_split[4]')
+    random_part = column(names, data, 'c_split[7]')
+    velocity = column(names, data, 'c_vfluid')
+    if velocity is None:
+        sys.exit(f'channel_sphere: {path} has no c_vfluid column (mean fluid velocity)')
+    use_split = conservative is not None and args.force != 'total'
+    drag_series = conservative + dissipative if use_split else total
+    drag, drag_err = batch_mean(drag_series, args.batches)
+    total_mean, total_err = batch_mean(total, args.batches)
+    u, u_err = batch_mean(velocity, args.batches)
+    if args.U is not None:          # a set reference velocity (e.g. the wall speed), no error
+        u, u_err = args.U, 0.0
+    re = args.rho * u * args.d / args.eta
+    re_err = re * u_err / u
+    cd = 8.0 * drag / (math.pi * args.d**2 * args.rho * u * u)
+    cd_err = cd * math.hypot(drag_err / drag, 2.0 * u_err / u)
+    result = {
+        'file': path, 'rows': len(data), 'U': u, 'U_err': u_err, 'Re': re, 'Re_err': re_err,
+        'F_D': drag, 'F_D_err': drag_err, 'F_total': total_mean, 'F_total_err': total_err,
+        'estimator': 'C+D' if use_split else 'total',
+        'C_D': cd, 'C_D_err': cd_err,
+        'C_D_correlation': float(correlation_cd(re)), 'C_D_stokes': float(stokes_cd(re)),
+    }
+    if use_split:
+        result['F_C'] = batch_mean(conservative, args.batches)[0]
+        result['F_D_diss'] = batch_mean(dissipative, args.batches)[0]
+        result['F_R'], result['F_R_err'] = batch_mean(random_part, args.batches)
+    fy = column(names, data, 'c_fsphere[2]', 'c_fcolloid[2]')
+    if fy is not None:
+        result['F_y'], result['F_y_err'] = batch_mean(fy, args.batches)
+    temperature = column(names, data, 'c_tfluid')
+    if temperature is not None:
+        result['kT'] = float(temperature.mean())
+    return result
+
+
+def drag_command(args):
+    series = []
+    for spec in args.series or []:
+        label, _, files = spec.partition(':')
+        series.append((label, [f for f in files.split(',') if f]))
+    if args.files:
+        series.append(('', args.files))
+    if not series:
+        sys.exit('channel_sphere: give drag files or --series label:file,file')
+    results = []
+    print(f'# rho {args.rho} d {args.d} eta {args.eta}; discard {args.discard}, '
+          f'{args.batches} batches; errors are one standard error')
+    print(f'{"series":>10} {"file":>28} {"U":>14} {"Re":>13} {"F_D":>14} {"F_total":>14} '
+          f'{"C_D":>14} {"corr.":>6} {"C_D/corr":>8} {"24/Re":>6}')
+    for label, files in series:
+        for path in files:
+            r = analyse(path, args)
+            r['series'] = label
+            results.append(r)
+            print(f'{label:>10} {path[-28:]:>28} {r["U"]:7.4f}+-{r["U_err"]:.4f} '
+                  f'{r["Re"]:6.3f}+-{r["Re_err"]:.3f} {r["F_D"]:7.3f}+-{r["F_D_err"]:5.3f} '
+                  f'{r["F_total"]:7.3f}+-{r["F_total_err"]:5.3f} '
+                  f'{r["C_D"]:7.3f}+-{r["C_D_err"]:5.3f} {r["C_D_correlation"]:6.3f} '
+                  f'{r["C_D"] / r["C_D_correlation"]:8.3f} {r["C_D_stokes"]:6.3f}')
+    if args.json:
+        with open(args.json, 'w') as f:
+            json.dump(results, f, indent=1)
+    if args.png:
+        plot_drag(results, args)
+    return results
+
+
+def plot_drag(results, args):
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(5.5, 4.2), dpi=100)
+    res = [r['Re'] for r in results]
+    grid = np.geomspace(min(res) / 1.5, max(res) * 1.5, 100)
+    ax.plot(grid, correlation_cd(grid), 'k-', label='Brown & Lawler correlation')
+    ax.plot(grid, stokes_cd(grid), 'k--', label='Stokes, 24/Re')
+    markers = 'osD^v<>'
+    labels = []
+    for r in results:
+        if r['series'] not in labels:
+            labels.append(r['series'])
+    for k, label in enumerate(labels):
+        rs = [r for r in results if r['series'] == label]
+        ax.errorbar([r['Re'] for r in rs], [r['C_D'] for r in rs],
+                    xerr=[r['Re_err'] for r in rs], yerr=[r['C_D_err'] for r in rs],
+                    fmt=markers[k % len(markers)], capsize=3, label=label or 'DPD')
+    ax.set_xscale('log')
+    ax.set_yscale('log')
+    ax.set_xlabel('Re = rho U d / eta')
+    ax.set_ylabel('C_D = 8 F_D / (pi d^2 rho U^2)')
+    if args.title:
+        ax.set_title(args.title, fontsize=10)
+    ax.legend(fontsize=8)
+    ax.grid(True, which='both', alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(args.png)
+    print(f'wrote {args.png}')
+
+
+def read_ave_chunk(path):
+    """Blocks of a fix ave/chunk file: (column names, array[block, chunk, column])."""
+    names, blocks = None, []
+    with open(path) as f:
+        lines = [line for line in f if line.strip()]
+    i = 0
+    while i < len(lines):
+        line = lines[i]
+        if line.startswith('#'):
+            words = line[1:].split()
+            if words and words[0] == 'Chunk':
+                names = words
+            i += 1
+            continue
+        nchunks = int(line.split()[1])
+        rows = [[float(w) for w in lines[i + 1 + k].split()] for k in range(nchunks)]
+        blocks.append(rows)
+        i += 1 + nchunks
+    if names is None or not blocks:
+        sys.exit(f'channel_sphere: {path} is not a fix ave/chunk file with data')
+    return names, np.array(blocks)
+
+
+def radius_command(args):
+    """Mean radial distance of the wall particles from the channel axis along x (compliant
+    channel): averages the blocks after --discard, per bin and overall."""
+    out = []
+    for path in args.files:
+        names, blocks = read_ave_chunk(path)
+        start = int(round(args.discard * len(blocks)))
+        blocks = blocks[start:]
+        x = blocks[0, :, names.index('Coord1')]
+        count = blocks[:, :, names.index('Ncount')]
+        radius = blocks[:, :, names.index('v_wall_r')]
+        weights = count.sum(axis=0)
+        mean_r = (radius * count).sum(axis=0) / np.maximum(weights, 1e-300)
+        overall, overall_err = batch_mean((radius * count).sum(axis=1) / count.sum(axis=1),
+                                          min(args.batches, len(blocks)))
+        out.append((path, x, mean_r, overall, overall_err))
+        print(f'{path}: mean wall radius {overall:.4f} +- {overall_err:.4f}; '
+              f'min over x {mean_r.min():.4f}, max {mean_r.max():.4f}')
+    if args.png:
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(5.5, 3.6), dpi=100)
+        for path, x, mean_r, _, _ in out:
+            label = path.split('/')[-1]
+            ax.plot(x, mean_r, '-', label=label)
+        ax.set_xlabel('x (channel axis)')
+        ax.set_ylabel('mean radial distance of wall particles')
+        ax.legend(fontsize=8)
+        ax.grid(True, alpha=0.3)
+        fig.tight_layout()
+        fig.savefig(args.png)
+        print(f'wrote {args.png}')
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest='command', required=True)
+    drag = sub.add_parser('drag', help='Re and C_D from drag files')
+    drag.add_argument('files', nargs='*')
+    drag.add_argument('--series', action='append', help='label:file1,file2,...')
+    drag.add_argument('--rho', type=float, default=4.0, help='mass density of the fluid')
+    drag.add_argument('--d', type=float, default=3.0, help='sphere diameter')
+    drag.add_argument('--eta', type=float, default=1.083, help='dynamic viscosity')
+    drag.add_argument('--U', type=float,
+                      help='reference velocity instead of the mean fluid velocity (e.g. the '
+                           'wall speed of in.sphere_shear)')
+    drag.add_argument('--force', choices=['split', 'total'], default='split',
+                      help='drag estimator: conservative + dissipative part (default, when the '
+                           'file has the split) or the total force')
+    drag.add_argument('--discard', type=float, default=0.2,
+                      help='fraction of the rows dropped at the start')
+    drag.add_argument('--batches', type=int, default=10)
+    drag.add_argument('--png')
+    drag.add_argument('--title')
+    drag.add_argument('--json')
+    radius = sub.add_parser('radius', help='mean wall radius along the axis')
+    radius.add_argument('files', nargs='+')
+    radius.add_argument('--discard', type=float, default=0.2)
+    radius.add_argument('--batches', type=int, default=10)
+    radius.add_argument('--png')
+    args = parser.parse_args(argv)
+    if args.command == 'drag':
+        if not 0.0 <= args.discard < 1.0:
+            sys.exit('channel_sphere: --discard must be in [0, 1)')
+        drag_command(args)
+    else:
+        radius_command(args)
+
+
+if __name__ == '__main__':
+    main()
