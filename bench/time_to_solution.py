@@ -22,10 +22,14 @@ MASS_TIME = {0.0001: 0.05}
 CASES = [
     ("stock dpd/ext + nve", "stock", "nve", 0.01, [0.0003, 0.0005, 0.0007, 0.0009]),
     ("dpd/gen + etd (diagonal)", "gen", "etd", 0.01, [0.0003, 0.0005, 0.0007, 0.001]),
-    ("dpd/gen + etd scheme implicit", "gen", "etd scheme implicit", 0.01, [0.002, 0.003, 0.004, 0.005, 0.006]),
+    ("dpd/gen + etd scheme implicit", "gen", "etd scheme implicit", 0.01, [0.002, 0.003, 0.0035, 0.004, 0.005]),
+    ("dpd/gen + etd scheme implicit tol 1e-4", "gen", "etd scheme implicit tol 1e-4", 0.01,
+     [0.003, 0.0035, 0.004, 0.005]),
     ("stock dpd/ext + nve", "stock", "nve", 0.001, [0.00003, 0.00005, 0.00007, 0.0001]),
     ("dpd/gen + etd (diagonal)", "gen", "etd", 0.001, [0.00005, 0.0001, 0.0002]),
-    ("dpd/gen + etd scheme implicit", "gen", "etd scheme implicit", 0.001, [0.0005, 0.0007, 0.001, 0.0015]),
+    ("dpd/gen + etd scheme implicit", "gen", "etd scheme implicit", 0.001, [0.0005, 0.0007, 0.001, 0.0012, 0.0015]),
+    ("dpd/gen + etd scheme implicit tol 1e-4", "gen", "etd scheme implicit tol 1e-4", 0.001,
+     [0.001, 0.0012, 0.0015]),
     ("stock dpd/ext + nve", "stock", "nve", 0.0001, [0.000003, 0.000005, 0.000007, 0.00001]),
     ("dpd/gen + etd scheme implicit", "gen", "etd scheme implicit", 0.0001, [0.0001, 0.0002, 0.0003, 0.0005]),
 ]

@@ -28,6 +28,18 @@ std::vector<std::string> fluid(const std::string &newton)
           "pair_coeff 2 2 25 4.5 2.0", "pair_coeff 1 2 1750 20.48 0.25 1.0 cut_d 1.5 exp_c 0.5"};
 }
 
+// Atoms whose half of the box (the 2 x 2 x 1 decomposition of 4 ranks splits x and y at
+// the middle of the 7.2 box) changed between two snapshots, counting periodic wrap-arounds.
+double crossings(const std::vector<double> &before, const std::vector<double> &after)
+{
+  auto half = [](double c) { return static_cast<int>(std::floor(c / 3.6)) & 1; };
+  double count = 0.0;
+  for (size_t a = 0; a < before.size() / 3; a++)
+    if (half(before[3 * a]) != half(after[3 * a]) || half(before[3 * a + 1]) != half(after[3 * a + 1]))
+      count += 1.0;
+  return count;
+}
+
 }    // namespace
 
 class Ranks : public ::testing::Test {
@@ -66,13 +78,19 @@ TEST_F(Ranks, EtdTrajectoryAgreesAcrossRankCounts)
     for (int ranks : {1, 2, 4})
       results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
         l.cmds(fluid("on"));
-        l.cmds({"fix 1 all etd order " + order, "run 20 post no"});
+        // re-neighbor (and so migrate) every step: an atom that crosses a sub-domain boundary
+        // changes rank at the next step and must carry its order-2 state with it
+        l.cmds({"neigh_modify every 1 delay 0 check no", "fix 1 all etd order " + order});
+        const auto x0 = l.gather("x");
+        l.cmd("run 20 post no");
         auto x = l.gather("x");
         auto v = l.gather("v");
         x.insert(x.end(), v.begin(), v.end());
+        x.push_back(crossings(x0, x));
         return x;
       }));
   if (etdtest::world_rank() != 0) return;
+  EXPECT_GT(results.front().back(), 10.0) << "too few atoms changed sub-domain to test migration";
   // summation order differs between decompositions; round-off grows over the 20 steps of this
   // stiff fluid (velocities up to about 40), so compare relative to the largest value
   for (int o = 0; o < 2; o++) {
