@@ -42,7 +42,7 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
 {
   time_integrate = 1;
   vector_flag = 1;
-  size_vector = 4;
+  size_vector = 5;
   extvector = 0;
   global_freq = 1;
   comm_forward = 6;     // 3 values per atom, 6 with rotation
@@ -515,6 +515,20 @@ void FixETDImplicit::friction_noise_step()
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
       for (int k = 0; k < dofs; k++) *dof_pointer(i, k) = solution[dofs * i + k] + (k < 3 ? shift[k] : 0.0);
+
+  // The end-of-step velocities that thermo sees carry the splitting's deficit
+  // dt^2 <F^2> / (4 m kBT); these, fresh out of the friction step, do not (output 5).
+  double kinetic[2] = {0.0, 0.0}, kinetic_sum[2];
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) {
+      const double *v = atom->v[i];
+      kinetic[0] += inertia[dofs * i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      kinetic[1] += 3.0;
+    }
+  MPI_Allreduce(kinetic, kinetic_sum, 2, MPI_DOUBLE, MPI_SUM, world);
+  // degrees of freedom as compute temp counts them (the centre-of-mass motion removed)
+  const double dof = kinetic_sum[1] - 3.0;
+  friction_step_temperature = dof > 0.0 ? kinetic_sum[0] / (force->boltz * dof) * force->mvv2e : 0.0;
 }
 
 // Solves G v = F + B xi / sqrt(h) - G v_fixed at the current pair geometry, with the given
@@ -597,7 +611,8 @@ double FixETDImplicit::compute_vector(int n)
   if (n == 0) return last_iterations;
   if (n == 1) return last_residual;
   if (n == 2) return solves ? iterations_sum / solves : 0.0;
-  return predictor_steps;
+  if (n == 3) return predictor_steps;
+  return friction_step_temperature;
 }
 
 int FixETDImplicit::pack_forward_comm(int n, int *list_, double *buf, int, int *)

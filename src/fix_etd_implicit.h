@@ -68,6 +68,7 @@ class FixETDImplicit : public Fix {
   int last_iterations;
   double last_residual;
   double iterations_sum;
+  double friction_step_temperature = 0.0;    // kinetic temperature right after the friction step
   long solves;
   long predictor_steps;    // overdamped steps that kept the predictor (singular midpoint)
 
