@@ -109,9 +109,11 @@ TEST(WallCylinderBounce, NoAtomEntersAnObstacle)
 
 // A small Couette cell: fluid (n = 4, m = 0.01, kBT = 1) in |z| < 3 between frozen fcc walls
 // in 3 < |z| < 4.5 moving at -+3 along x, a 0.2 thermal layer at each wall, and (with_reflect)
-// fix wall/reflect at z = -+3. Returns the largest |z| of a fluid atom over every step of the
-// run and the number of fluid atoms at its end (lost atoms are dropped, not an error).
-std::pair<double, long> couette_cell(bool with_reflect, int steps, double *redrawn = nullptr)
+// fix wall/reflect at z = -+3; fix etd with the given scheme. Returns the largest |z| of a fluid
+// atom over every step of the run and the number of fluid atoms at its end (lost atoms are
+// dropped, not an error).
+std::pair<double, long> couette_cell(bool with_reflect, int steps, double *redrawn = nullptr,
+                                     const std::string &scheme = "diagonal")
 {
   Lammps l;
   l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "boundary p p f",
@@ -123,7 +125,7 @@ std::pair<double, long> couette_cell(bool with_reflect, int steps, double *redra
           "pair_coeff * * 18.75 4.5 0.5", "pair_coeff 2*3 2*3 0.0 0.0 0.5",
           "neigh_modify exclude type 2 2 exclude type 3 3 exclude type 2 3",
           "velocity fluid create 1.0 8231 mom yes", "velocity lo set -3 0 0", "velocity hi set 3 0 0",
-          "timestep 0.001", "fix integrate fluid etd", "fix move_lo lo move linear -3 0 0",
+          "timestep 0.001", "fix integrate fluid etd scheme " + scheme, "fix move_lo lo move linear -3 0 0",
           "fix move_hi hi move linear 3 0 0",
           "fix layer fluid wall/thermal/layer 99 zlo -3 0.2 1.0 -3 0 0 zhi 3 0.2 1.0 3 0 0",
           "thermo_modify lost ignore", "variable absz atom abs(z)", "compute zmax fluid reduce max v_absz",
@@ -148,6 +150,10 @@ TEST(WallThermalLayer, NoFluidAtomCrossesPlaneWallsInALongCouetteRun)
   // the same cell without the reflecting planes: the check sees fluid entering the walls
   const auto open = couette_cell(false, 500);
   EXPECT_GT(open.first, 3.0);
+  // the implicit scheme (friction between the two half drifts) with the same walls
+  const auto implicit = couette_cell(true, 2000, &redrawn, "implicit");
+  EXPECT_LE(implicit.first, 3.0);
+  EXPECT_EQ(implicit.second, 384);
 }
 
 TEST(WallThermalLayer, LayerGetsTheWallMaxwellianAndTheRestIsUntouched)
