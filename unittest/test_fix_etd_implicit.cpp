@@ -121,7 +121,9 @@ TEST(FixEtdImplicit, SplitReportsTheFrictionStepItTook)
   Lammps l;
   fluid(l);
   const double h = 0.002, m = 0.01;
-  l.cmds({"region wall block INF INF INF INF 0 1", "group wall region wall", "group mobile subtract all wall",
+  // atoms re-sorted (and, with ranks, exchanged) at every step: the recorded split follows them
+  l.cmds({"atom_modify sort 1 0.5", "neigh_modify every 1 delay 0 check no",
+          "region wall block INF INF INF INF 0 1", "group wall region wall", "group mobile subtract all wall",
           "velocity wall set 5.0 0 0", "timestep 0.002", "fix 1 mobile etd scheme implicit tol 1e-12",
           "compute split all dpd/split", "run 0 post no"});
   const auto v0 = l.gather("v"), f0 = l.gather("f"), x0 = l.gather("x");
