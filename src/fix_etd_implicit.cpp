@@ -38,8 +38,8 @@ using namespace FixConst;
 FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), overdamped(false), midpoint(true), tolerance(1e-6), max_iterations(200), dt(0.0),
     list(nullptr), dofs(3), any_fixed_partner(false), comm_vector(nullptr), comm_width(3),
-    split_requested(false), split_rows(0), split(nullptr), last_iterations(0), last_residual(0.0), iterations_sum(0.0),
-    solves(0), predictor_steps(0)
+    split_requested(false), split_rows(0), split(nullptr), last_iterations(0), last_residual(0.0),
+    iterations_sum(0.0), solves(0), predictor_steps(0)
 {
   time_integrate = 1;
   vector_flag = 1;
@@ -630,7 +630,8 @@ void FixETDImplicit::overdamped_step()
 
 // D = -G v with G of the last solve (atoms outside the group at their own velocity), R = the
 // random force of the step
-void FixETDImplicit::overdamped_split(const std::vector<double> &velocity, const std::vector<double> &impulse)
+void FixETDImplicit::overdamped_split(const std::vector<double> &velocity,
+                                      const std::vector<double> &impulse)
 {
   const int nlocal = atom->nlocal;
   const int *mask = atom->mask;
@@ -714,7 +715,8 @@ int FixETDImplicit::unpack_exchange(int nlocal, double *buf)
 
 double FixETDImplicit::memory_usage()
 {
-  return sizeof(double) * 6 * split_rows + sizeof(etd::FrictionPair) * pairs.capacity() + sizeof(double) * pair_noise.capacity() +
+  return sizeof(double) * 6 * split_rows + sizeof(etd::FrictionPair) * pairs.capacity() +
+      sizeof(double) * pair_noise.capacity() +
       sizeof(etd::FpmFrictionPair) * fpm_pairs.capacity() + sizeof(double) * fpm_noise.capacity() +
       sizeof(double) * (operand.capacity() + diagonal.capacity());
 }

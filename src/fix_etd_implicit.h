@@ -40,8 +40,9 @@ class FixETDImplicit : public Fix {
   int unpack_exchange(int, double *) override;
 
   // For compute dpd/split (which calls request_split() in its init; the extra work, one
-  // application of G per step, is done from then on): per owned atom, inside the group or not, the dissipative and random
-  // forces of the last friction step, [nlocal][6] = D xyz, R xyz; they travel with the atoms.
+  // application of G per step, is done from then on): per owned atom, inside the group or
+  // not, the dissipative and random forces of the last friction step, [nlocal][6] = D xyz,
+  // R xyz; they travel with the atoms.
   // Inertial: D = -G (v + v')/2 (atoms outside the group at their own v), R = B xi / sqrt(h), so
   // that for an atom of the group h (D + R) = M (v' - v) of the friction step. Overdamped:
   // D = -G v, R = B xi / sqrt(h) (D + R = -F on the group's atoms).
