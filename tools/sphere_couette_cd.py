@@ -4,8 +4,9 @@
 Re = 2 a U rho / eta and C_d = F / (0.5 pi a^2 rho U^2), rho = n m the mass density, a the middle
 of the eq 38 range of the effective radius, eta fixed (the paper's 3.9682); Stokes: C_d = 24/Re.
 
-usage: tools/sphere_couette_cd.py OUTDIR [--png FILE] [--U U] [--eta ETA] [--density N]
-OUTDIR holds mass_<m>/table.txt (the output of tools/sphere_couette.py for each mass).
+usage: tools/sphere_couette_cd.py [LABEL=]OUTDIR ... [--png FILE] [--U U] [--eta ETA] [--density N]
+Each OUTDIR holds mass_<m>/table.txt (the output of tools/sphere_couette.py for each mass); with
+several, each gets its table and its series in the plot (LABEL names it).
 """
 import argparse
 import glob
@@ -42,34 +43,44 @@ def rows(outdir, U, eta, density):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("outdir")
+    ap.add_argument("outdirs", nargs="+")
     ap.add_argument("--png", default=None)
     ap.add_argument("--U", type=float, default=3.0)
     ap.add_argument("--eta", type=float, default=3.9682)
     ap.add_argument("--density", type=float, default=4.0)
     args = ap.parse_args()
-    table = rows(args.outdir, args.U, args.eta, args.density)
-    if not table:
-        sys.exit(f"no mass_*/table.txt under {args.outdir}")
-    print(f"{'m':>7} {'Re':>7} {'F':>16} {'C_d':>16} {'24/Re':>8} {'C_d Re/24':>14} {'kBT':>7}")
-    for r in table:
-        ratio, dratio = r["Cd"] / r["stokes"], r["dCd"] / r["stokes"]
-        print(f"{r['m']:7.3f} {r['Re']:7.4f} {r['F']:8.1f} +- {r['dF']:5.1f} {r['Cd']:8.1f} +- {r['dCd']:5.1f}"
-              f" {r['stokes']:8.1f} {ratio:7.3f} +- {dratio:.3f} {r['kT']:7.4f}")
+    series = []
+    for spec in args.outdirs:
+        label, _, outdir = spec.rpartition("=")
+        table = rows(outdir, args.U, args.eta, args.density)
+        if not table:
+            sys.exit(f"no mass_*/table.txt under {outdir}")
+        series.append((label or "fix etd scheme diagonal, reduced box", table))
+    for label, table in series:
+        if len(series) > 1:
+            print(f"# {label}")
+        print(f"{'m':>7} {'Re':>7} {'F':>16} {'C_d':>16} {'24/Re':>8} {'C_d Re/24':>14} {'kBT':>7}")
+        for r in table:
+            ratio, dratio = r["Cd"] / r["stokes"], r["dCd"] / r["stokes"]
+            print(f"{r['m']:7.3f} {r['Re']:7.4f} {r['F']:8.1f} +- {r['dF']:5.1f} {r['Cd']:8.1f} +- {r['dCd']:5.1f}"
+                  f" {r['stokes']:8.1f} {ratio:7.3f} +- {dratio:.3f} {r['kT']:7.4f}")
     if args.png:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(5, 4))
-        ax.errorbar([r["Re"] for r in table], [r["Cd"] for r in table], yerr=[r["dCd"] for r in table],
-                    fmt="o", capsize=3, label="fix etd scheme diagonal, reduced box")
-        lo, hi = 0.8 * table[0]["Re"], 1.25 * table[-1]["Re"]
+        for k, (label, table) in enumerate(series):
+            shift = 1.0 + 0.04 * k    # side by side where the Re are the same
+            ax.errorbar([shift * r["Re"] for r in table], [r["Cd"] for r in table],
+                        yerr=[r["dCd"] for r in table], fmt="os^"[k % 3], capsize=3, label=label)
+        res = [r["Re"] for _, table in series for r in table]
+        lo, hi = 0.8 * min(res), 1.25 * max(res)
         ax.plot([lo, hi], [24.0 / lo, 24.0 / hi], "k-", label="Stokes, 24/Re")
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("Re = 2 a U rho / eta")
         ax.set_ylabel("C_d = F / (0.5 pi a^2 rho U^2)")
-        ax.legend()
+        ax.legend(fontsize=8)
         fig.tight_layout()
         fig.savefig(args.png, dpi=120)
 
