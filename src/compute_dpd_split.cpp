@@ -1,11 +1,16 @@
 // ETD-DPD: compute dpd/split. The pair style accumulates the split during its force
 // evaluation; this compute only reads it, so its values belong to the last force evaluation.
+// Under fix etd scheme implicit the pair style computes only the conservative part; the
+// dissipative and random parts then come from the fix, those of the friction step of the
+// same timestep.
 #include "compute_dpd_split.h"
 
 #include "atom.h"
 #include "dpd_style_lookup.h"
 #include "error.h"
+#include "fix_etd_implicit.h"
 #include "memory.h"
+#include "modify.h"
 #include "update.h"
 
 #include <cstring>
@@ -15,7 +20,7 @@ using namespace LAMMPS_NS;
 static constexpr int NVALUES = 9;
 
 ComputeDPDSplit::ComputeDPDSplit(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), provider(nullptr), nmax(0), per_atom(nullptr)
+    Compute(lmp, narg, arg), provider(nullptr), implicit(nullptr), nmax(0), per_atom(nullptr)
 {
   if (narg != 3)
     error->all(FLERR, "Illegal compute dpd/split command: expected 'compute ID group dpd/split', "
@@ -46,6 +51,15 @@ void ComputeDPDSplit::init()
                providers.size());
   provider = providers.front();
   provider->request_force_split();
+  implicit = nullptr;
+  for (int i = 0; i < modify->nfix; i++)
+    if (auto *fix = dynamic_cast<FixETDImplicit *>(modify->fix[i])) {
+      if (implicit)
+        error->all(FLERR, "Compute dpd/split supports one fix etd scheme implicit, found {} and {}",
+                   implicit->id, fix->id);
+      implicit = fix;
+    }
+  if (implicit) implicit->request_split();
 }
 
 void ComputeDPDSplit::copy_split()
@@ -62,6 +76,12 @@ void ComputeDPDSplit::copy_split()
   for (int i = 0; i < nlocal; i++)
     for (int k = 0; k < NVALUES; k++)
       per_atom[i][k] = (split && (mask[i] & groupbit)) ? split[i][k] : 0.0;
+  if (implicit) {    // the pair style's D and R columns are zero: the fix applied them
+    double **dr = implicit->dissipative_random_split();
+    for (int i = 0; i < nlocal; i++)
+      if (mask[i] & groupbit)
+        for (int k = 0; k < 6; k++) per_atom[i][3 + k] = dr[i][k];
+  }
 }
 
 void ComputeDPDSplit::compute_peratom()

@@ -19,6 +19,7 @@ class ComputeDPDSplit : public Compute {
 
  private:
   etd::DpdExtrasProvider *provider;
+  class FixETDImplicit *implicit;    // fix etd scheme implicit: it supplies the D and R parts
   int nmax;
   double **per_atom;
   void copy_split();

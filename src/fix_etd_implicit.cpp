@@ -37,8 +37,9 @@ using namespace FixConst;
 
 FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), overdamped(false), midpoint(true), tolerance(1e-6), max_iterations(200), dt(0.0),
-    list(nullptr), dofs(3), any_fixed_partner(false), comm_vector(nullptr), comm_width(3), last_iterations(0),
-    last_residual(0.0), iterations_sum(0.0), solves(0), predictor_steps(0)
+    list(nullptr), dofs(3), any_fixed_partner(false), comm_vector(nullptr), comm_width(3),
+    split_requested(false), split_rows(0), split(nullptr), last_iterations(0), last_residual(0.0),
+    iterations_sum(0.0), solves(0), predictor_steps(0)
 {
   time_integrate = 1;
   vector_flag = 1;
@@ -80,6 +81,17 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
     }
     iarg += 2;
   }
+
+  // per-atom split for compute dpd/split, kept with the atoms when they migrate or are sorted
+  maxexchange = 6;
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+}
+
+FixETDImplicit::~FixETDImplicit()
+{
+  atom->delete_callback(id, Atom::GROW);
+  memory->destroy(split);
 }
 
 int FixETDImplicit::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
@@ -529,6 +541,30 @@ void FixETDImplicit::friction_noise_step()
   // degrees of freedom as compute temp counts them (the centre-of-mass motion removed)
   const double dof = kinetic_sum[1] - 3.0;
   friction_step_temperature = dof > 0.0 ? kinetic_sum[0] / (force->boltz * dof) * force->mvv2e : 0.0;
+
+  if (split_requested) {
+    // the Crank-Nicolson mean velocity (v + v')/2; u holds v in the group and 2 v outside it
+    std::vector<double> &mean = work.mean;
+    mean.resize(dofs * nlocal);
+    for (int i = 0; i < nlocal; i++) {
+      const bool mobile = mask[i] & groupbit;
+      for (int k = 0; k < dofs; k++)
+        mean[dofs * i + k] = 0.5 * (u[dofs * i + k] + (mobile ? *dof_pointer(i, k) : 0.0));
+    }
+    record_split(mean, impulse, 1.0 / h);    // impulse = sqrt(h) B xi
+  }
+}
+
+void FixETDImplicit::record_split(const std::vector<double> &mean_velocity,
+                                  const std::vector<double> &random_force, double random_scale)
+{
+  std::vector<double> &gmean = work.gmean;
+  apply_friction(mean_velocity.data(), gmean, false);
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int k = 0; k < 3; k++) {
+      split[i][k] = -gmean[dofs * i + k];
+      split[i][3 + k] = random_scale * random_force[dofs * i + k];
+    }
 }
 
 // Solves G v = F + B xi / sqrt(h) - G v_fixed at the current pair geometry, with the given
@@ -583,6 +619,7 @@ void FixETDImplicit::overdamped_step()
           x[i][k] += h * predicted[3 * i + k];
           v[i][k] = predicted[3 * i + k];
         }
+    if (split_requested) overdamped_split(predicted, impulse);
     return;
   }
   for (int i = 0; i < nlocal; i++)
@@ -602,6 +639,21 @@ void FixETDImplicit::overdamped_step()
         x[i][k] += h * solution[3 * i + k] - 0.5 * h * predicted[3 * i + k];
         v[i][k] = solution[3 * i + k];
       }
+  if (split_requested) overdamped_split(solution, impulse);
+}
+
+// D = -G v with G of the last solve (atoms outside the group at their own velocity), R = the
+// random force of the step
+void FixETDImplicit::overdamped_split(const std::vector<double> &velocity,
+                                      const std::vector<double> &impulse)
+{
+  const int nlocal = atom->nlocal;
+  const int *mask = atom->mask;
+  std::vector<double> &mean = work.mean;
+  mean.resize(3 * nlocal);
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < 3; k++) mean[3 * i + k] = (mask[i] & groupbit) ? velocity[3 * i + k] : atom->v[i][k];
+  record_split(mean, impulse, 1.0);    // impulse = B xi / sqrt(h)
 }
 
 /* ---- output and communication ---------------------------------------------------------- */
@@ -651,9 +703,35 @@ void FixETDImplicit::unpack_reverse_comm(int n, int *list_, double *buf)
     for (int k = 0; k < comm_width; k++) vec[comm_width * list_[i] + k] += buf[m++];
 }
 
+void FixETDImplicit::grow_arrays(int nmax)
+{
+  memory->grow(split, nmax, 6, "etd:split");
+  for (int i = split_rows; i < nmax; i++)
+    for (int k = 0; k < 6; k++) split[i][k] = 0.0;
+  split_rows = std::max(split_rows, nmax);
+}
+
+void FixETDImplicit::copy_arrays(int i, int j, int)
+{
+  for (int k = 0; k < 6; k++) split[j][k] = split[i][k];
+}
+
+int FixETDImplicit::pack_exchange(int i, double *buf)
+{
+  for (int k = 0; k < 6; k++) buf[k] = split[i][k];
+  return 6;
+}
+
+int FixETDImplicit::unpack_exchange(int nlocal, double *buf)
+{
+  for (int k = 0; k < 6; k++) split[nlocal][k] = buf[k];
+  return 6;
+}
+
 double FixETDImplicit::memory_usage()
 {
-  return sizeof(etd::FrictionPair) * pairs.capacity() + sizeof(double) * pair_noise.capacity() +
+  return sizeof(double) * 6 * split_rows + sizeof(etd::FrictionPair) * pairs.capacity() +
+      sizeof(double) * pair_noise.capacity() +
       sizeof(etd::FpmFrictionPair) * fpm_pairs.capacity() + sizeof(double) * fpm_noise.capacity() +
       sizeof(double) * (operand.capacity() + diagonal.capacity());
 }

@@ -21,6 +21,7 @@ namespace LAMMPS_NS {
 class FixETDImplicit : public Fix {
  public:
   FixETDImplicit(class LAMMPS *, int, char **);
+  ~FixETDImplicit() override;
   int setmask() override;
   void init() override;
   void init_list(int, class NeighList *) override;
@@ -33,6 +34,20 @@ class FixETDImplicit : public Fix {
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+
+  // For compute dpd/split (which calls request_split() in its init; the extra work, one
+  // application of G per step, is done from then on): per owned atom, inside the group or
+  // not, the dissipative and random forces of the last friction step, [nlocal][6] = D xyz,
+  // R xyz; they travel with the atoms.
+  // Inertial: D = -G (v + v')/2 (atoms outside the group at their own v), R = B xi / sqrt(h), so
+  // that for an atom of the group h (D + R) = M (v' - v) of the friction step. Overdamped:
+  // D = -G v, R = B xi / sqrt(h) (D + R = -F on the group's atoms).
+  void request_split() { split_requested = true; }
+  double **dissipative_random_split() const { return split; }
 
  private:
   bool overdamped;
@@ -62,8 +77,16 @@ class FixETDImplicit : public Fix {
   struct Work {
     std::vector<double> masses, rhs, inv_diag, block_inverse, gu;    // solve()
     std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia, predicted;    // the steps
+    std::vector<double> mean, gmean;    // record_split()
     etd::CgWorkspace cg;
   } work;
+
+  bool split_requested;
+  int split_rows;    // rows of split allocated (atom->nmax at the last grow)
+  double **split;
+  void overdamped_split(const std::vector<double> &velocity, const std::vector<double> &impulse);
+  void record_split(const std::vector<double> &mean_velocity, const std::vector<double> &random_force,
+                    double random_scale);
 
   int last_iterations;
   double last_residual;

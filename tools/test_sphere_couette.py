@@ -66,6 +66,25 @@ def main():
         assert abs(value("u_x upstream x=-5.75") - 2.5) < 1e-9
         assert abs(value("kBT mid-plane (r > 1.5)") - 0.25) < 1e-9
         assert os.path.exists(os.path.join(d, "t_maps.png"))
+        # the drag coefficient of a mass scan (tools/sphere_couette_cd.py): this table at m = 0.01
+        # and at m = 0.1 with the drag doubled: Re = 2 a U 4 m / eta, C_d = F / (0.5 pi a^2 4 m U^2)
+        for mass, factor in (("0.01", 1.0), ("0.1", 2.0)):
+            os.makedirs(os.path.join(d, "scan", "mass_" + mass))
+            with open(os.path.join(d, "scan", "mass_" + mass, "table.txt"), "w") as f:
+                f.write(text.replace(re.search(r"drag F_x\s+([-\d.]+)", text).group(1),
+                                     f"{factor * value('drag F_x'):.2f}", 1))
+        out = subprocess.run([sys.executable, os.path.join(HERE, "sphere_couette_cd.py"),
+                              os.path.join(d, "scan"), "--png", os.path.join(d, "cd.png")],
+                             capture_output=True, text=True)
+        print(out.stdout, out.stderr)
+        assert out.returncode == 0
+        rows = [line.split() for line in out.stdout.splitlines()[1:]]
+        assert [r[0] for r in rows] == ["0.010", "0.100"]
+        a, F = 0.825, value("drag F_x")
+        for r, m, factor in zip(rows, (0.01, 0.1), (1.0, 2.0)):
+            assert abs(float(r[1]) - 2 * a * 3.0 * 4 * m / 3.9682) < 1e-4
+            assert abs(float(r[5]) - factor * F / (0.5 * 3.141592653589793 * a * a * 4 * m * 9.0)) < 0.1
+        assert os.path.exists(os.path.join(d, "cd.png"))
     print("PASS")
 
 

@@ -85,8 +85,9 @@ TEST(FixEtdImplicit, AtomsOutsideTheGroupKeepTheirVelocitiesAndDragTheFluid)
   EXPECT_GT(fluid_momentum, 5.0);
 }
 
-// While the implicit scheme runs, dpd/gen computes conservative forces only; after unfix the
-// full DPD force is back.
+// While the implicit scheme runs, dpd/gen computes conservative forces only (compute dpd/split's
+// D and R parts then come from the fix, zero before its first step); after unfix the full DPD
+// force is back.
 TEST(FixEtdImplicit, PairStyleLeavesFrictionAndNoiseToTheFix)
 {
   Lammps l;
@@ -108,6 +109,81 @@ TEST(FixEtdImplicit, PairStyleLeavesFrictionAndNoiseToTheFix)
   for (size_t a = 0; a < split.size() / 9; a++)
     for (int k = 3; k < 9; k++) dissipative_and_random += std::fabs(split[9 * a + k]);
   EXPECT_GT(dissipative_and_random, 1.0);
+}
+
+// compute dpd/split under the implicit scheme: the dissipative and random parts are those of
+// the fix's friction step, D = -G (v + v')/2 and R = B xi / sqrt(h), so that for every atom of
+// the group m (v1 - v0) = h/2 (F0 + F1) + h (D + R) over one step (F: the conservative forces
+// before and after it), and pairwise: D and R sum to zero over all atoms, the frozen ones
+// (a wall moving at 5 along x) receiving what the fluid loses.
+TEST(FixEtdImplicit, SplitReportsTheFrictionStepItTook)
+{
+  Lammps l;
+  fluid(l);
+  const double h = 0.002, m = 0.01;
+  // atoms re-sorted (and, with ranks, exchanged) at every step: the recorded split follows them
+  l.cmds({"atom_modify sort 1 0.5", "neigh_modify every 1 delay 0 check no",
+          "region wall block INF INF INF INF 0 1", "group wall region wall", "group mobile subtract all wall",
+          "velocity wall set 5.0 0 0", "timestep 0.002", "fix 1 mobile etd scheme implicit tol 1e-12",
+          "compute split all dpd/split", "run 0 post no"});
+  const auto v0 = l.gather("v"), f0 = l.gather("f"), x0 = l.gather("x");
+  l.cmd("run 1 post no");
+  const auto v1 = l.gather("v"), f1 = l.gather("f"), split = l.gather_compute("split", 9);
+  double worst = 0.0, scale = 0.0, sum_d[3] = {0, 0, 0}, sum_r[3] = {0, 0, 0}, wall_drag = 0.0;
+  double d_size = 0.0, r_size = 0.0;
+  for (size_t a = 0; a < v0.size() / 3; a++) {
+    const bool frozen = x0[3 * a + 2] < 1.0;
+    for (int k = 0; k < 3; k++) {
+      const double d = split[9 * a + 3 + k], r = split[9 * a + 6 + k];
+      sum_d[k] += d;
+      sum_r[k] += r;
+      d_size = std::max(d_size, std::fabs(d));
+      r_size = std::max(r_size, std::fabs(r));
+      if (frozen) {
+        if (k == 0) wall_drag += d + r;
+        continue;
+      }
+      const double kick = m * (v1[3 * a + k] - v0[3 * a + k]) - 0.5 * h * (f0[3 * a + k] + f1[3 * a + k]);
+      worst = std::max(worst, std::fabs(kick - h * (d + r)));
+      scale = std::max(scale, std::fabs(h * (d + r)));
+    }
+  }
+  EXPECT_GT(d_size, 1.0);
+  EXPECT_GT(r_size, 1.0);
+  EXPECT_LT(worst, 1e-8 * scale) << "worst " << worst << " scale " << scale;
+  for (int k = 0; k < 3; k++) {
+    EXPECT_LT(std::fabs(sum_d[k]), 1e-9 * d_size) << k;
+    EXPECT_LT(std::fabs(sum_r[k]), 1e-9 * r_size) << k;
+  }
+  // the fluid at rest brakes the wall moving along +x
+  EXPECT_LT(wall_drag, 0.0);
+}
+
+// Overdamped: the solve is G v = F + B xi / sqrt(h), so D + R = -F (F at the start of the step)
+// on the group's atoms, with the single solve and with the midpoint scheme.
+TEST(FixEtdImplicit, OverdampedSplitBalancesTheForce)
+{
+  for (const std::string midpoint : {"yes", "no"}) {
+    Lammps l;
+    fluid(l);
+    l.cmds({"region wall block INF INF INF INF 0 1", "group wall region wall", "group mobile subtract all wall",
+            "timestep 0.001", "fix 1 mobile etd scheme implicit overdamped yes tol 1e-12 midpoint " + midpoint,
+            "compute split all dpd/split", "run 0 post no"});
+    const auto f0 = l.gather("f"), x0 = l.gather("x");
+    l.cmd("run 1 post no");
+    const auto split = l.gather_compute("split", 9);
+    double worst = 0.0, scale = 0.0, r_size = 0.0;
+    for (size_t a = 0; a < f0.size() / 3; a++) {
+      if (x0[3 * a + 2] < 1.0) continue;
+      for (int k = 0; k < 3; k++) {
+        worst = std::max(worst, std::fabs(split[9 * a + 3 + k] + split[9 * a + 6 + k] + f0[3 * a + k]));
+        scale = std::max(scale, std::fabs(f0[3 * a + k]));
+        r_size = std::max(r_size, std::fabs(split[9 * a + 6 + k]));
+      }
+    }
+    EXPECT_GT(r_size, 1.0) << "midpoint " << midpoint;
+    EXPECT_LT(worst, 1e-7 * scale) << "midpoint " << midpoint << " worst " << worst;
+  }
 }
 
 // The scheme keeps no state besides x and v, and its noise is keyed on the timestep.

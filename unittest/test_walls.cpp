@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <functional>
+#include <utility>
 
 using etdtest::Lammps;
 
@@ -104,6 +105,55 @@ TEST(WallCylinderBounce, NoAtomEntersAnObstacle)
   }
   EXPECT_GE(closest, 1.0);
   EXPECT_GT(l.fix_vector("rod", 0), 10.0);
+}
+
+// A small Couette cell: fluid (n = 4, m = 0.01, kBT = 1) in |z| < 3 between frozen fcc walls
+// in 3 < |z| < 4.5 moving at -+3 along x, a 0.2 thermal layer at each wall, and (with_reflect)
+// fix wall/reflect at z = -+3; fix etd with the given scheme. Returns the largest |z| of a fluid
+// atom over every step of the run and the number of fluid atoms at its end (lost atoms are
+// dropped, not an error).
+std::pair<double, long> couette_cell(bool with_reflect, int steps, double *redrawn = nullptr,
+                                     const std::string &scheme = "diagonal")
+{
+  Lammps l;
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "boundary p p f",
+          "region box block 0 4 0 4 -6 6 units box", "create_box 3 box", "lattice fcc 4.0 origin 0 0 0.25",
+          "region fluid block INF INF INF INF -3 3 units box", "region lo block INF INF INF INF -4.5 -3 units box",
+          "region hi block INF INF INF INF 3 4.5 units box", "create_atoms 1 region fluid",
+          "create_atoms 2 region lo", "create_atoms 3 region hi", "group fluid type 1", "group walls type 2 3",
+          "group lo type 2", "group hi type 3", "mass * 0.01", "pair_style dpd/gen 1.0 1.0 4711",
+          "pair_coeff * * 18.75 4.5 0.5", "pair_coeff 2*3 2*3 0.0 0.0 0.5",
+          "neigh_modify exclude type 2 2 exclude type 3 3 exclude type 2 3",
+          "velocity fluid create 1.0 8231 mom yes", "velocity lo set -3 0 0", "velocity hi set 3 0 0",
+          "timestep 0.001", "fix integrate fluid etd scheme " + scheme, "fix move_lo lo move linear -3 0 0",
+          "fix move_hi hi move linear 3 0 0",
+          "fix layer fluid wall/thermal/layer 99 zlo -3 0.2 1.0 -3 0 0 zhi 3 0.2 1.0 3 0 0",
+          "thermo_modify lost ignore", "variable absz atom abs(z)", "compute zmax fluid reduce max v_absz",
+          "fix zmax_series all vector 1 c_zmax"});
+  if (with_reflect) l.cmd("fix reflect fluid wall/reflect zlo -3 zhi 3 units box");
+  l.cmd("run " + std::to_string(steps) + " post no");
+  if (redrawn) *redrawn = l.fix_vector("layer", 1);    // kinetic energy the redraws added
+  l.cmds({"variable zmax_run equal max(f_zmax_series)", "variable nfluid equal count(fluid)",
+          "fix result all ave/time 1 1 1 v_zmax_run v_nfluid", "run 0 post no"});
+  return {l.fix_vector("result", 0), std::lround(l.fix_vector("result", 1))};
+}
+
+TEST(WallThermalLayer, NoFluidAtomCrossesPlaneWallsInALongCouetteRun)
+{
+  // 384 fluid atoms; 5000 steps = 5 time units, about 30 wall-normal crossings of the cell by
+  // a thermal atom (sqrt(kBT/m) = 10), every step checked
+  double redrawn = 0.0;
+  const auto kept = couette_cell(true, 5000, &redrawn);
+  EXPECT_LE(kept.first, 3.0);
+  EXPECT_EQ(kept.second, 384);
+  EXPECT_NE(redrawn, 0.0);    // the layers were populated and exchanged heat
+  // the same cell without the reflecting planes: the check sees fluid entering the walls
+  const auto open = couette_cell(false, 500);
+  EXPECT_GT(open.first, 3.0);
+  // the implicit scheme (friction between the two half drifts) with the same walls
+  const auto implicit = couette_cell(true, 2000, &redrawn, "implicit");
+  EXPECT_LE(implicit.first, 3.0);
+  EXPECT_EQ(implicit.second, 384);
 }
 
 TEST(WallThermalLayer, LayerGetsTheWallMaxwellianAndTheRestIsUntouched)
