@@ -52,7 +52,7 @@ def run(lmp, plugin, pair, integrator, mass, dt, time, workdir, equil=None, rank
            "-log", log, "-screen", "none"]
     done = subprocess.run(cmd, cwd=workdir)
     text = open(log).read() if os.path.exists(log) else ""
-    m = re.search(r"kBT=([0-9.]+)", text)
+    m = re.search(r"RESULT .*kBT=([0-9.]+)", text)
     loops = re.findall(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps", text)
     friction = re.search(r"FRICTION_STEP kBT=([0-9.]+)", text)
     if done.returncode != 0 or not m or len(loops) < 2:
