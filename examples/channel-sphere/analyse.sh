@@ -1,0 +1,26 @@
+#!/bin/bash
+# Tables and figures of doc/channel_sphere.md from the drag and wall-radius files in this folder.
+# Run from examples/channel-sphere: bash analyse.sh   (system Python with numpy and matplotlib)
+set -e
+PY=${PY:-/usr/bin/python3}
+T=../../tools/channel_sphere.py
+F=../../doc/figures
+echo "== shear flow, 56-particle sphere and one-particle colloid (U = mean fluid velocity)"
+$PY $T drag --series "56 particles:drag.U0.25,drag.U0.5,drag.U0.9" \
+    --series "56 particles, a_sphere 18.75:drag.U0.9_a18.75" \
+    --series "1-particle colloid:drag.colloid_U0.9" \
+    --title "sphere between moving walls (reduced box 25 x 12.6 x 12.6)" \
+    --png $F/channel_sphere_cd_shear.png
+echo "== the same, total force instead of the conservative + dissipative part"
+$PY $T drag --force total drag.U0.25 drag.U0.5 drag.U0.9 drag.U0.9_a18.75 drag.colloid_U0.9
+echo "== rigid cylindrical channel, body force (U = mean fluid velocity)"
+$PY $T drag --series "d/D=0.19:drag.D15.75_f0.016" --series "d/D=0.25:drag.D12_f0.027" \
+    --series "d/D=0.33:drag.D9_f0.045" --series "between walls:drag.U0.25,drag.U0.5,drag.U0.9" \
+    --title "sphere on the axis of a rigid pipe (length 25.2)" \
+    --png $F/channel_sphere_cd_pipe.png
+echo "== compliant channel (d/D = 0.24, r_max = 3)"
+$PY $T drag --series "H=1:drag.compliant_H1_rmax3_rigidno" --series "H=8:drag.compliant_H8_rmax3_rigidno" \
+    --series "rigid shell:drag.compliant_H8_rmax3_rigidyes" \
+    --title "compliant pipe, D = 12.4, r_max = 3" --png $F/channel_sphere_cd_compliant.png
+$PY $T radius wall_radius.compliant_H1_rmax3_rigidno wall_radius.compliant_H8_rmax3_rigidno \
+    wall_radius.compliant_H8_rmax3_rigidyes --png $F/channel_sphere_radius.png
