@@ -68,6 +68,9 @@ def main():
         close(r['F_D'], drag, 4 * 2.0 / math.sqrt(900), 'C+D drag')
         expected_cd = 8 * r['F_D'] / (math.pi * 9 * 4 * u * u)
         close(r['C_D'], expected_cd, 1e-12, 'C_D from the drag')
+        close(r['a_eff'], r['F_D'] / (6 * math.pi * 1.0 * u), 1e-12, 'Stokes radius')
+        # C_D = 24/Re exactly when a_eff = d/2
+        close(r['C_D'] / r['C_D_stokes'], r['a_eff'] / 1.5, 1e-12, 'C_D/(24/Re) = a_eff/(d/2)')
         # error of the mean of 900 rows with unit-variance noise 2: 2/30 (batch estimate, +-40 %)
         close(r['F_D_err'], 2.0 / 30.0, 0.4 * 2.0 / 30.0, 'C+D error')
         if r['estimator'] != 'C+D':
@@ -87,6 +90,22 @@ def main():
         p = subprocess.run([sys.executable, SCRIPT, 'drag', bad], capture_output=True, text=True)
         if p.returncode == 0 or 'not a fix ave/time file' not in p.stderr:
             sys.exit(f'FAIL: bad file accepted: {p.returncode} {p.stderr}')
+        # the radius reader: two blocks of three bins; the second block only after --discard 0.5
+        chunk = os.path.join(tmp, 'wall_radius.test')
+        with open(chunk, 'w') as f:
+            f.write('# Chunk-averaged data for fix radius and group inner_layer\n'
+                    '# Timestep Number-of-chunks Total-count\n'
+                    '# Chunk Coord1 Ncount v_wall_r\n')
+            f.write('1000 3 30\n1 0.5 10 9.0\n2 1.5 10 9.0\n3 2.5 10 9.0\n')
+            f.write('2000 3 40\n1 0.5 10 6.0\n2 1.5 20 6.5\n3 2.5 10 7.0\n')
+        names, blocks = channel_sphere.read_ave_chunk(chunk)
+        if blocks.shape != (2, 3, 4):
+            sys.exit(f'FAIL radius reader: shape {blocks.shape}')
+        p = subprocess.run([sys.executable, SCRIPT, 'radius', chunk, '--discard', '0.5'],
+                           capture_output=True, text=True, check=True)
+        # count-weighted mean of the kept block: (60 + 130 + 70) / 40 = 6.5; min 6.0, max 7.0
+        if 'mean wall radius 6.5000' not in p.stdout or 'min over x 6.0000, max 7.0000' not in p.stdout:
+            sys.exit(f'FAIL radius: {p.stdout}')
     print('channel_sphere script: all checks passed')
 
 
