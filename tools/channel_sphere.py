@@ -92,9 +92,9 @@ def analyse(path, args):
     conservative = column(names, data, 'c_split[1]')
     dissipative = column(names, data, 'c_split[4]')
     random_part = column(names, data, 'c_split[7]')
-    velocity = column(names, data, 'c_vfluid')
+    velocity = column(names, data, args.velocity)
     if velocity is None:
-        sys.exit(f'channel_sphere: {path} has no c_vfluid column (mean fluid velocity)')
+        sys.exit(f'channel_sphere: {path} has no {args.velocity} column (mean fluid velocity)')
     use_split = conservative is not None and args.force != 'total'
     drag_series = conservative + dissipative if use_split else total
     drag, drag_err = batch_mean(drag_series, args.batches)
@@ -270,6 +270,9 @@ def main(argv=None):
     drag.add_argument('--U', type=float,
                       help='reference velocity instead of the mean fluid velocity (e.g. the '
                            'wall speed of in.sphere_shear)')
+    drag.add_argument('--velocity', default='c_vfluid',
+                      help='column of the reference velocity (v_vcore: the core fluid of '
+                           'in.sphere_compliant)')
     drag.add_argument('--force', choices=['split', 'total'], default='split',
                       help='drag estimator: conservative + dissipative part (default, when the '
                            'file has the split) or the total force')
