@@ -79,6 +79,13 @@ def main():
         t = run([path, '--discard', '0.1', '--batches', '20', '--force', 'total'])[0]
         close(t['F_D'], drag, 4 * math.hypot(50.0, 2.0) / 30.0, 'total drag')
         close(t['F_D_err'], math.hypot(50.0, 2.0) / 30.0, 0.4 * 50.0 / 30.0, 'total error')
+        # another column as the reference velocity (here the temperature column, 1.0)
+        v = run([path, '--discard', '0.1', '--batches', '20', '--velocity', 'c_tfluid'])[0]
+        close(v['U'], 1.0, 1e-12, '--velocity column')
+        p = subprocess.run([sys.executable, SCRIPT, 'drag', path, '--velocity', 'v_none'],
+                           capture_output=True, text=True)
+        if p.returncode == 0 or 'no v_none column' not in p.stderr:
+            sys.exit(f'FAIL: missing velocity column accepted: {p.stderr}')
         # without --discard the transient biases the mean upwards
         b = run([path, '--discard', '0.0', '--batches', '20'])[0]
         if not b['F_D'] > drag + 10:
