@@ -229,7 +229,10 @@ def radius_command(args):
         count = blocks[:, :, names.index('Ncount')]
         radius = blocks[:, :, names.index('v_wall_r')]
         weights = count.sum(axis=0)
-        mean_r = (radius * count).sum(axis=0) / np.maximum(weights, 1e-300)
+        keep = weights > 0              # bins never holding a wall particle (the box's last,
+        x, weights = x[keep], weights[keep]     # partial bin) have no radius
+        count, radius = count[:, keep], radius[:, keep]
+        mean_r = (radius * count).sum(axis=0) / weights
         per_block = (radius * count).sum(axis=1) / count.sum(axis=1)
         overall = float(per_block.mean())
         if len(blocks) >= 4:        # batch error only with enough blocks to batch

@@ -103,14 +103,15 @@ def main():
             f.write('# Chunk-averaged data for fix radius and group inner_layer\n'
                     '# Timestep Number-of-chunks Total-count\n'
                     '# Chunk Coord1 Ncount v_wall_r\n')
-            f.write('1000 3 30\n1 0.5 10 9.0\n2 1.5 10 9.0\n3 2.5 10 9.0\n')
-            f.write('2000 3 40\n1 0.5 10 6.0\n2 1.5 20 6.5\n3 2.5 10 7.0\n')
+            f.write('1000 4 30\n1 0.5 10 9.0\n2 1.5 10 9.0\n3 2.5 10 9.0\n4 3.5 0 0\n')
+            f.write('2000 4 40\n1 0.5 10 6.0\n2 1.5 20 6.5\n3 2.5 10 7.0\n4 3.5 0 0\n')
         names, blocks = channel_sphere.read_ave_chunk(chunk)
-        if blocks.shape != (2, 3, 4):
+        if blocks.shape != (2, 4, 4):
             sys.exit(f'FAIL radius reader: shape {blocks.shape}')
         p = subprocess.run([sys.executable, SCRIPT, 'radius', chunk, '--discard', '0.5'],
                            capture_output=True, text=True, check=True)
-        # count-weighted mean of the kept block: (60 + 130 + 70) / 40 = 6.5; min 6.0, max 7.0
+        # count-weighted mean of the kept block: (60 + 130 + 70) / 40 = 6.5; min 6.0, max 7.0 (the
+        # empty fourth bin has no radius, not 0)
         if 'mean wall radius 6.5000' not in p.stdout or 'min over x 6.0000, max 7.0000' not in p.stdout:
             sys.exit(f'FAIL radius: {p.stdout}')
     print('channel_sphere script: all checks passed')
