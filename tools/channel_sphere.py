@@ -217,12 +217,26 @@ def read_ave_chunk(path):
     return names, np.array(blocks)
 
 
+def read_chunk_steps(path):
+    """Time steps of the blocks of a fix ave/chunk file."""
+    steps = []
+    with open(path) as f:
+        lines = [line for line in f if line.strip() and not line.startswith('#')]
+    i = 0
+    while i < len(lines):
+        words = lines[i].split()
+        steps.append(int(words[0]))
+        i += 1 + int(words[1])
+    return steps
+
+
 def radius_command(args):
     """Mean radial distance of the wall particles from the channel axis along x (compliant
     channel): averages the blocks after --discard, per bin and overall."""
     out = []
     for path in args.files:
         names, blocks = read_ave_chunk(path)
+        steps = read_chunk_steps(path)
         start = int(round(args.discard * len(blocks)))
         blocks = blocks[start:]
         x = blocks[0, :, names.index('Coord1')]
@@ -240,7 +254,14 @@ def radius_command(args):
             err_text = f'{overall_err:.4f}'
         else:
             overall_err, err_text = float('nan'), 'n/a (fewer than 4 blocks)'
-        out.append((path, x, mean_r, overall, overall_err))
+        if args.each:               # one profile per kept block: a wall that is still moving
+            for k in range(len(blocks)):
+                step = int(steps[start + k]) if steps else k
+                prof = np.where(count[k] > 0, radius[k], np.nan)
+                print(f'  block at step {step}: ' + ' '.join(f'{v:.2f}' for v in prof))
+                out.append((f'{path.split("/")[-1]} step {step}', x, prof, None, None))
+        else:
+            out.append((path, x, mean_r, overall, overall_err))
         print(f'{path}: mean wall radius {overall:.4f} +- {err_text}; '
               f'min over x {mean_r.min():.4f}, max {mean_r.max():.4f}')
     if args.png:
@@ -249,7 +270,7 @@ def radius_command(args):
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(5.5, 3.6), dpi=100)
         for path, x, mean_r, _, _ in out:
-            label = path.split('/')[-1]
+            label = path.split('/')[-1].replace('wall_radius.', '')
             ax.plot(x, mean_r, '-', label=label)
         ax.set_xlabel('x (channel axis)')
         ax.set_ylabel('mean radial distance of wall particles')
@@ -290,6 +311,8 @@ def main(argv=None):
     radius.add_argument('--discard', type=float, default=0.2)
     radius.add_argument('--batches', type=int, default=10)
     radius.add_argument('--png')
+    radius.add_argument('--each', action='store_true',
+                        help='print and plot the profile of every kept block, not their mean')
     args = parser.parse_args(argv)
     if args.command == 'drag':
         if not 0.0 <= args.discard < 1.0:

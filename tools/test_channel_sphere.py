@@ -114,6 +114,12 @@ def main():
         # empty fourth bin has no radius, not 0)
         if 'mean wall radius 6.5000' not in p.stdout or 'min over x 6.0000, max 7.0000' not in p.stdout:
             sys.exit(f'FAIL radius: {p.stdout}')
+        # --each: one profile per block, labelled by its step, without the never-filled bin
+        p = subprocess.run([sys.executable, SCRIPT, 'radius', chunk, '--discard', '0', '--each'],
+                           capture_output=True, text=True, check=True)
+        if ('block at step 1000: 9.00 9.00 9.00\n' not in p.stdout
+                or 'block at step 2000: 6.00 6.50 7.00\n' not in p.stdout):
+            sys.exit(f'FAIL radius --each: {p.stdout}')
     print('channel_sphere script: all checks passed')
 
 
