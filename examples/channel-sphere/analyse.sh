@@ -18,9 +18,16 @@ $PY $T drag --series "d/D=0.19:drag.D15.75_f0.016" --series "d/D=0.25:drag.D12_f
     --series "d/D=0.33:drag.D9_f0.045" --series "between walls:drag.U0.25,drag.U0.5,drag.U0.9" \
     --title "sphere on the axis of a rigid pipe (length 25.2)" \
     --png $F/channel_sphere_cd_pipe.png
-echo "== compliant channel (d/D = 0.24, r_max = 3)"
-$PY $T drag --series "H=1:drag.compliant_H1_rmax3_rigidno" --series "H=8:drag.compliant_H8_rmax3_rigidno" \
-    --series "rigid shell:drag.compliant_H8_rmax3_rigidyes" \
-    --title "compliant pipe, D = 12.4, r_max = 3" --png $F/channel_sphere_cd_compliant.png
-$PY $T radius wall_radius.compliant_H1_rmax3_rigidno wall_radius.compliant_H8_rmax3_rigidno \
-    wall_radius.compliant_H8_rmax3_rigidyes --png $F/channel_sphere_radius.png
+echo "== compliant channel (d/D = 0.24, r_max = 3); U = mean velocity of the fluid inside r < D/2"
+$PY $T drag --velocity v_vcore drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno \
+    drag.compliant_H8_rmax3_rigidno_r2
+echo "== wall radius, mean of the blocks after the first 20 %"
+$PY $T radius wall_radius.compliant_H1_rmax3_rigidno wall_radius.compliant_H8_rmax3_rigidno_r2 \
+    wall_radius.compliant_H8_rmax3_rigidyes
+echo "== wall radius, every block (the wall is still moving)"
+$PY $T radius --each --discard 0 wall_radius.compliant_H1_rmax3_rigidno --png $F/channel_sphere_radius_H1.png
+$PY $T radius --each --discard 0 wall_radius.compliant_H8_rmax3_rigidno_r2 --png $F/channel_sphere_radius_H8.png
+echo "== core velocity and core fluid count against time (steps, v_vcore, v_ncore), every 1000 steps"
+for f in drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno drag.compliant_H8_rmax3_rigidno_r2; do
+    echo "$f:"; awk '!/^#/ && $1 % 1000 == 0 {printf "  %d %.3f %.0f\n", $1, $13, $12}' $f
+done
