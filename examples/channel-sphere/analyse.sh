@@ -15,7 +15,7 @@ $PY $T drag --series "56 particles:drag.U0.15,drag.U0.25,drag.U0.5,drag.U0.9" \
 echo "== the same, total force instead of the conservative + dissipative part"
 $PY $T drag --force total drag.U0.15 drag.U0.25 drag.U0.5 drag.U0.9 drag.U0.9_a18.75 drag.colloid_U0.9 drag.colloid_U0.9_rc1.22 drag.colloid_U0.9_rc1.1
 echo "== rigid cylindrical channel, body force (U = mean fluid velocity)"
-$PY $T drag --series "d/D=0.19:drag.D15.75_f0.016" --series "d/D=0.25:drag.D12_f0.027,drag.D12_f0.054" \
+$PY $T drag --series "d/D=0.19:drag.D15.75_f0.016,drag.D15.75_f0.032" --series "d/D=0.25:drag.D12_f0.027,drag.D12_f0.054" \
     --series "d/D=0.33:drag.D9_f0.045,drag.D9_f0.09" --series "between walls:drag.U0.15,drag.U0.25,drag.U0.5,drag.U0.9" \
     --title "sphere on the axis of a rigid pipe (length 25.2)" \
     --png $F/channel_sphere_cd_pipe.png
