@@ -11,6 +11,8 @@ groups the rest into --batches batch means and takes the standard error over the
          file has it (the random part has mean zero exactly and only adds noise), else the total
   U    = mean fluid velocity along x (the sphere is at rest), or --U
   Re   = rho U d / eta,    C_D = 8 F_D / (pi d^2 rho U^2)
+  a_eff = F_D / (6 pi eta U): the Stokes radius (d/2 when the drag is Stokes' law; C_D = 24/Re
+         then)
 
 against Stokes (24/Re) and Brown and Lawler's correlation
 C_D = 24/Re (1 + 0.150 Re^0.681) + 0.407 / (1 + 8710/Re).
@@ -90,9 +92,9 @@ def analyse(path, args):
     conservative = column(names, data, 'c_split[1]')
     dissipative = column(names, data, 'c_split[4]')
     random_part = column(names, data, 'c_split[7]')
-    velocity = column(names, data, 'c_vfluid')
+    velocity = column(names, data, args.velocity)
     if velocity is None:
-        sys.exit(f'channel_sphere: {path} has no c_vfluid column (mean fluid velocity)')
+        sys.exit(f'channel_sphere: {path} has no {args.velocity} column (mean fluid velocity)')
     use_split = conservative is not None and args.force != 'total'
     drag_series = conservative + dissipative if use_split else total
     drag, drag_err = batch_mean(drag_series, args.batches)
@@ -104,11 +106,14 @@ def analyse(path, args):
     re_err = re * u_err / u
     cd = 8.0 * drag / (math.pi * args.d**2 * args.rho * u * u)
     cd_err = cd * math.hypot(drag_err / drag, 2.0 * u_err / u)
+    # Stokes radius: the radius of the sphere whose Stokes drag 6 pi eta a U equals F_D
+    a_eff = drag / (6.0 * math.pi * args.eta * u)
+    a_eff_err = a_eff * math.hypot(drag_err / drag, u_err / u)
     result = {
         'file': path, 'rows': len(data), 'U': u, 'U_err': u_err, 'Re': re, 'Re_err': re_err,
         'F_D': drag, 'F_D_err': drag_err, 'F_total': total_mean, 'F_total_err': total_err,
         'estimator': 'C+D' if use_split else 'total',
-        'C_D': cd, 'C_D_err': cd_err,
+        'C_D': cd, 'C_D_err': cd_err, 'a_eff': a_eff, 'a_eff_err': a_eff_err,
         'C_D_correlation': float(correlation_cd(re)), 'C_D_stokes': float(stokes_cd(re)),
     }
     if use_split:
@@ -137,7 +142,7 @@ def drag_command(args):
     print(f'# rho {args.rho} d {args.d} eta {args.eta}; discard {args.discard}, '
           f'{args.batches} batches; errors are one standard error')
     print(f'{"series":>10} {"file":>28} {"U":>14} {"Re":>13} {"F_D":>14} {"F_total":>14} '
-          f'{"C_D":>14} {"corr.":>6} {"C_D/corr":>8} {"24/Re":>6}')
+          f'{"C_D":>14} {"corr.":>6} {"C_D/corr":>8} {"24/Re":>6} {"a_eff":>12}')
     for label, files in series:
         for path in files:
             r = analyse(path, args)
@@ -147,7 +152,8 @@ def drag_command(args):
                   f'{r["Re"]:6.3f}+-{r["Re_err"]:.3f} {r["F_D"]:7.3f}+-{r["F_D_err"]:5.3f} '
                   f'{r["F_total"]:7.3f}+-{r["F_total_err"]:5.3f} '
                   f'{r["C_D"]:7.3f}+-{r["C_D_err"]:5.3f} {r["C_D_correlation"]:6.3f} '
-                  f'{r["C_D"] / r["C_D_correlation"]:8.3f} {r["C_D_stokes"]:6.3f}')
+                  f'{r["C_D"] / r["C_D_correlation"]:8.3f} {r["C_D_stokes"]:6.3f} '
+                  f'{r["a_eff"]:5.3f}+-{r["a_eff_err"]:.3f}')
     if args.json:
         with open(args.json, 'w') as f:
             json.dump(results, f, indent=1)
@@ -211,23 +217,52 @@ def read_ave_chunk(path):
     return names, np.array(blocks)
 
 
+def read_chunk_steps(path):
+    """Time steps of the blocks of a fix ave/chunk file."""
+    steps = []
+    with open(path) as f:
+        lines = [line for line in f if line.strip() and not line.startswith('#')]
+    i = 0
+    while i < len(lines):
+        words = lines[i].split()
+        steps.append(int(words[0]))
+        i += 1 + int(words[1])
+    return steps
+
+
 def radius_command(args):
     """Mean radial distance of the wall particles from the channel axis along x (compliant
     channel): averages the blocks after --discard, per bin and overall."""
     out = []
     for path in args.files:
         names, blocks = read_ave_chunk(path)
+        steps = read_chunk_steps(path)
         start = int(round(args.discard * len(blocks)))
         blocks = blocks[start:]
         x = blocks[0, :, names.index('Coord1')]
         count = blocks[:, :, names.index('Ncount')]
         radius = blocks[:, :, names.index('v_wall_r')]
         weights = count.sum(axis=0)
-        mean_r = (radius * count).sum(axis=0) / np.maximum(weights, 1e-300)
-        overall, overall_err = batch_mean((radius * count).sum(axis=1) / count.sum(axis=1),
-                                          min(args.batches, len(blocks)))
-        out.append((path, x, mean_r, overall, overall_err))
-        print(f'{path}: mean wall radius {overall:.4f} +- {overall_err:.4f}; '
+        keep = weights > 0              # bins never holding a wall particle (the box's last,
+        x, weights = x[keep], weights[keep]     # partial bin) have no radius
+        count, radius = count[:, keep], radius[:, keep]
+        mean_r = (radius * count).sum(axis=0) / weights
+        per_block = (radius * count).sum(axis=1) / count.sum(axis=1)
+        overall = float(per_block.mean())
+        if len(blocks) >= 4:        # batch error only with enough blocks to batch
+            overall_err = batch_mean(per_block, min(args.batches, len(blocks) // 2))[1]
+            err_text = f'{overall_err:.4f}'
+        else:
+            overall_err, err_text = float('nan'), 'n/a (fewer than 4 blocks)'
+        if args.each:               # one profile per kept block: a wall that is still moving
+            for k in range(len(blocks)):
+                step = int(steps[start + k]) if steps else k
+                prof = np.where(count[k] > 0, radius[k], np.nan)
+                print(f'  block at step {step}: ' + ' '.join(f'{v:.2f}' for v in prof))
+                out.append((f'{path.split("/")[-1]} step {step}', x, prof, None, None))
+        else:
+            out.append((path, x, mean_r, overall, overall_err))
+        print(f'{path}: mean wall radius {overall:.4f} +- {err_text}; '
               f'min over x {mean_r.min():.4f}, max {mean_r.max():.4f}')
     if args.png:
         import matplotlib
@@ -235,7 +270,7 @@ def radius_command(args):
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(5.5, 3.6), dpi=100)
         for path, x, mean_r, _, _ in out:
-            label = path.split('/')[-1]
+            label = path.split('/')[-1].replace('wall_radius.', '')
             ax.plot(x, mean_r, '-', label=label)
         ax.set_xlabel('x (channel axis)')
         ax.set_ylabel('mean radial distance of wall particles')
@@ -259,6 +294,9 @@ def main(argv=None):
     drag.add_argument('--U', type=float,
                       help='reference velocity instead of the mean fluid velocity (e.g. the '
                            'wall speed of in.sphere_shear)')
+    drag.add_argument('--velocity', default='c_vfluid',
+                      help='column of the reference velocity (v_vcore: the core fluid of '
+                           'in.sphere_compliant)')
     drag.add_argument('--force', choices=['split', 'total'], default='split',
                       help='drag estimator: conservative + dissipative part (default, when the '
                            'file has the split) or the total force')
@@ -273,6 +311,8 @@ def main(argv=None):
     radius.add_argument('--discard', type=float, default=0.2)
     radius.add_argument('--batches', type=int, default=10)
     radius.add_argument('--png')
+    radius.add_argument('--each', action='store_true',
+                        help='print and plot the profile of every kept block, not their mean')
     args = parser.parse_args(argv)
     if args.command == 'drag':
         if not 0.0 <= args.discard < 1.0:

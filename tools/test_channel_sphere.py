@@ -68,6 +68,9 @@ def main():
         close(r['F_D'], drag, 4 * 2.0 / math.sqrt(900), 'C+D drag')
         expected_cd = 8 * r['F_D'] / (math.pi * 9 * 4 * u * u)
         close(r['C_D'], expected_cd, 1e-12, 'C_D from the drag')
+        close(r['a_eff'], r['F_D'] / (6 * math.pi * 1.0 * u), 1e-12, 'Stokes radius')
+        # C_D = 24/Re exactly when a_eff = d/2
+        close(r['C_D'] / r['C_D_stokes'], r['a_eff'] / 1.5, 1e-12, 'C_D/(24/Re) = a_eff/(d/2)')
         # error of the mean of 900 rows with unit-variance noise 2: 2/30 (batch estimate, +-40 %)
         close(r['F_D_err'], 2.0 / 30.0, 0.4 * 2.0 / 30.0, 'C+D error')
         if r['estimator'] != 'C+D':
@@ -76,6 +79,13 @@ def main():
         t = run([path, '--discard', '0.1', '--batches', '20', '--force', 'total'])[0]
         close(t['F_D'], drag, 4 * math.hypot(50.0, 2.0) / 30.0, 'total drag')
         close(t['F_D_err'], math.hypot(50.0, 2.0) / 30.0, 0.4 * 50.0 / 30.0, 'total error')
+        # another column as the reference velocity (here the temperature column, 1.0)
+        v = run([path, '--discard', '0.1', '--batches', '20', '--velocity', 'c_tfluid'])[0]
+        close(v['U'], 1.0, 1e-12, '--velocity column')
+        p = subprocess.run([sys.executable, SCRIPT, 'drag', path, '--velocity', 'v_none'],
+                           capture_output=True, text=True)
+        if p.returncode == 0 or 'no v_none column' not in p.stderr:
+            sys.exit(f'FAIL: missing velocity column accepted: {p.stderr}')
         # without --discard the transient biases the mean upwards
         b = run([path, '--discard', '0.0', '--batches', '20'])[0]
         if not b['F_D'] > drag + 10:
@@ -87,6 +97,29 @@ def main():
         p = subprocess.run([sys.executable, SCRIPT, 'drag', bad], capture_output=True, text=True)
         if p.returncode == 0 or 'not a fix ave/time file' not in p.stderr:
             sys.exit(f'FAIL: bad file accepted: {p.returncode} {p.stderr}')
+        # the radius reader: two blocks of three bins; the second block only after --discard 0.5
+        chunk = os.path.join(tmp, 'wall_radius.test')
+        with open(chunk, 'w') as f:
+            f.write('# Chunk-averaged data for fix radius and group inner_layer\n'
+                    '# Timestep Number-of-chunks Total-count\n'
+                    '# Chunk Coord1 Ncount v_wall_r\n')
+            f.write('1000 4 30\n1 0.5 10 9.0\n2 1.5 10 9.0\n3 2.5 10 9.0\n4 3.5 0 0\n')
+            f.write('2000 4 40\n1 0.5 10 6.0\n2 1.5 20 6.5\n3 2.5 10 7.0\n4 3.5 0 0\n')
+        names, blocks = channel_sphere.read_ave_chunk(chunk)
+        if blocks.shape != (2, 4, 4):
+            sys.exit(f'FAIL radius reader: shape {blocks.shape}')
+        p = subprocess.run([sys.executable, SCRIPT, 'radius', chunk, '--discard', '0.5'],
+                           capture_output=True, text=True, check=True)
+        # count-weighted mean of the kept block: (60 + 130 + 70) / 40 = 6.5; min 6.0, max 7.0 (the
+        # empty fourth bin has no radius, not 0)
+        if 'mean wall radius 6.5000' not in p.stdout or 'min over x 6.0000, max 7.0000' not in p.stdout:
+            sys.exit(f'FAIL radius: {p.stdout}')
+        # --each: one profile per block, labelled by its step, without the never-filled bin
+        p = subprocess.run([sys.executable, SCRIPT, 'radius', chunk, '--discard', '0', '--each'],
+                           capture_output=True, text=True, check=True)
+        if ('block at step 1000: 9.00 9.00 9.00\n' not in p.stdout
+                or 'block at step 2000: 6.00 6.50 7.00\n' not in p.stdout):
+            sys.exit(f'FAIL radius --each: {p.stdout}')
     print('channel_sphere script: all checks passed')
 
 

@@ -1,0 +1,34 @@
+#!/bin/bash
+# Tables and figures of doc/channel_sphere.md from the drag and wall-radius files in this folder.
+# Run from examples/channel-sphere: bash analyse.sh   (system Python with numpy and matplotlib)
+set -e
+PY=${PY:-/usr/bin/python3}
+T=../../tools/channel_sphere.py
+F=../../doc/figures
+echo "== shear flow, 56-particle sphere and one-particle colloid (U = mean fluid velocity)"
+$PY $T drag --series "56 particles:drag.U0.15,drag.U0.25,drag.U0.5,drag.U0.9" \
+    --series "56 particles, a_sphere 18.75:drag.U0.9_a18.75" \
+    --series "1 particle, rcC 1.5:drag.colloid_U0.9" --series "1 particle, rcC 1.22:drag.colloid_U0.9_rc1.22" \
+    --series "1 particle, rcC 1.1:drag.colloid_U0.9_rc1.1" \
+    --title "sphere between moving walls (reduced box 25 x 12.6 x 12.6)" \
+    --png $F/channel_sphere_cd_shear.png
+echo "== the same, total force instead of the conservative + dissipative part"
+$PY $T drag --force total drag.U0.15 drag.U0.25 drag.U0.5 drag.U0.9 drag.U0.9_a18.75 drag.colloid_U0.9 drag.colloid_U0.9_rc1.22 drag.colloid_U0.9_rc1.1
+echo "== rigid cylindrical channel, body force (U = mean fluid velocity)"
+$PY $T drag --series "d/D=0.19:drag.D15.75_f0.016,drag.D15.75_f0.032" --series "d/D=0.25:drag.D12_f0.027,drag.D12_f0.054" \
+    --series "d/D=0.33:drag.D9_f0.045,drag.D9_f0.09" --series "between walls:drag.U0.15,drag.U0.25,drag.U0.5,drag.U0.9" \
+    --title "sphere on the axis of a rigid pipe (length 25.2)" \
+    --png $F/channel_sphere_cd_pipe.png
+echo "== compliant channel (d/D = 0.24, r_max = 3); U = mean velocity of the fluid inside r < D/2"
+$PY $T drag --velocity v_vcore drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno \
+    drag.compliant_H8_rmax3_rigidno_r2
+echo "== wall radius, mean of the blocks after the first 20 %"
+$PY $T radius wall_radius.compliant_H1_rmax3_rigidno wall_radius.compliant_H8_rmax3_rigidno_r2 \
+    wall_radius.compliant_H8_rmax3_rigidyes
+echo "== wall radius, every block (the wall is still moving)"
+$PY $T radius --each --discard 0 wall_radius.compliant_H1_rmax3_rigidno --png $F/channel_sphere_radius_H1.png
+$PY $T radius --each --discard 0 wall_radius.compliant_H8_rmax3_rigidno_r2 --png $F/channel_sphere_radius_H8.png
+echo "== core velocity and core fluid count against time (steps, v_vcore, v_ncore), every 1000 steps"
+for f in drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno drag.compliant_H8_rmax3_rigidno_r2; do
+    echo "$f:"; awk '!/^#/ && $1 % 1000 == 0 {printf "  %d %.3f %.0f\n", $1, $13, $12}' $f
+done
