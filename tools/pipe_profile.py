@@ -13,25 +13,7 @@ import sys
 
 import numpy as np
 
-
-def read_blocks(path):
-    """Blocks of a fix ave/chunk file: list of arrays (rows: chunk, r, x, count, values...)."""
-    blocks, rows, left = [], [], 0
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            fields = line.split()
-            if left == 0:
-                if rows:
-                    blocks.append(np.array(rows))
-                left, rows = int(fields[1]), []
-                continue
-            rows.append([float(x) for x in fields])
-            left -= 1
-    if rows and left == 0:
-        blocks.append(np.array(rows))
-    return blocks
+from lammps_output import read_blocks
 
 
 def fit(block, R, force, skip):
@@ -53,7 +35,7 @@ def main():
     ap.add_argument("--skip", type=float, default=1.0, help="leave out annuli within this of the wall")
     ap.add_argument("--png", default=None)
     args = ap.parse_args()
-    blocks = read_blocks(args.profile)
+    blocks = [rows for _, rows in read_blocks(args.profile)]
     if len(blocks) < 2:
         sys.exit(f"{args.profile}: need at least 2 blocks, found {len(blocks)}")
     fits = [fit(b, args.R, args.force, args.skip) for b in blocks]

@@ -14,28 +14,10 @@ import sys
 
 import numpy as np
 
+from lammps_output import read_blocks
+
 PAPER = {"F": 178.36, "FC": 47.53, "FD": 130.73, "FR": 0.10, "qbar": 0.95, "a_lo": 0.79, "a_hi": 0.84,
          "F_stokes_lo": 177.27, "F_stokes_hi": 188.49, "ux_up": 2.8651, "ux_down": 2.8323}
-
-
-def read_blocks(path):
-    """Blocks of a LAMMPS fix ave/time (mode vector) or ave/chunk file: list of (step, rows)."""
-    blocks, rows, step, left = [], [], None, 0
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            fields = line.split()
-            if left == 0:
-                if rows:
-                    blocks.append((step, np.array(rows)))
-                step, left, rows = int(fields[0]), int(fields[1]), []
-                continue
-            rows.append([float(x) for x in fields])
-            left -= 1
-    if rows:
-        blocks.append((step, np.array(rows)))
-    return blocks
 
 
 def first_nonzero(r, g, dq, threshold=0.05):
