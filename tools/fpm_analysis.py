@@ -3,7 +3,7 @@
 
   fpm_analysis.py DIR [--L L] [--rho RHO] [--g G] [--omega OMEGA]
                   [--drag LABEL FILE L G NFLUID] [--couette LABEL PREFIX]
-                  [--poiseuille LABEL PREFIX G H_WALL]
+                  [--poiseuille LABEL PREFIX G H h] [--pair LABEL FILE L G NFLUID l]
 
 Reads DIR/fpm_viscosity.profile, DIR/fpm_diffusion.track and DIR/fpm_rotating_sphere.torque
 (whichever exist) and prints a Markdown table side by side with Pan, Pivkin and Karniadakis,
@@ -175,6 +175,33 @@ def poiseuille(prefix, g, H, h, mu=PAPER_MU, R=PAPER_R):
                 umax=float(np.polyval(c, -c[1] / (2 * c[0]))))
 
 
+def two_spheres(path, L, g, nfluid, l, mu=PAPER_MU, R=PAPER_R):
+    """Two fixed colloids a distance l apart (along y) in a periodic cube, flow along x (Pan et
+    al. eq. 23). Drag per colloid F = N_fluid g / 2. Periodic images to leading order: each
+    colloid sees the mean flow u plus 2 x 2.837 F / (6 pi mu L) (its own lattice and the
+    other's; the same constant as Hasimoto's one-sphere correction, valid for l << L), so the
+    prediction is F = 6 pi mu R f(l) u / (1 - 2 x 2.837 R f(l) / L). Torque z: colloid 1 (lower
+    y) and colloid 2 carry opposite torques; their half difference is compared with eq. 23 at the
+    incident flow u_eff = F / (6 pi mu R f(l))."""
+    d = np.loadtxt(path, comments='#')
+    natoms = nfluid + 2
+    u, uerr = batch_mean(d[:, 1] * nfluid / natoms)
+    force = nfluid * g / 2
+    x = R / l
+    f = 1 - 3 * x / 4 + 9 * x ** 2 / 16 - 59 * x ** 3 / 64 + 465 * x ** 4 / 256 - 15813 * x ** 5 / 7168
+    tfac = 3 * x / (4 * l) - 9 * x ** 2 / (16 * l) + 27 * x ** 3 / (64 * l) - 273 * x ** 4 / (256 * l) \
+        + 1683 * x ** 5 / (1024 * l)
+    corr = 1 - 2 * HASIMOTO * R * f / L
+    f_pred = 6 * math.pi * mu * R * f * u / corr
+    u_eff = force / (6 * math.pi * mu * R * f)
+    t, terr = batch_mean((d[:, 7] - d[:, 8]) / 2)
+    t_the = 8 * math.pi * mu * R ** 3 * u_eff * tfac
+    fd, fderr = batch_mean(d[:, 2])
+    return dict(u=u, uerr=uerr, F=force, F_pred=f_pred, f=f, corr=corr, ratio=force / f_pred,
+                ratio_err=force / f_pred * uerr / u, u_eff=u_eff, T=t, Terr=terr, T_the=t_the,
+                Fd=fd, Fderr=fderr, Re=3.0 * u * R / mu, nblocks=len(d), Tk=float(d[:, 6].mean()))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('dir')
@@ -194,6 +221,9 @@ def main():
     ap.add_argument('--poiseuille', nargs=5, action='append', default=[],
                     metavar=('LABEL', 'PREFIX', 'G', 'H', 'h'),
                     help='in.fpm_wall_channel poiseuille output prefix; repeatable')
+    ap.add_argument('--pair', nargs=6, action='append', default=[],
+                    metavar=('LABEL', 'FILE', 'L', 'G', 'NFLUID', 'l'),
+                    help='two-sphere block file (in.fpm_periodic_drag with l > 0); repeatable')
     a = ap.parse_args()
     rows = []
     mu = PAPER_MU
@@ -268,6 +298,18 @@ def main():
         rows.append((f'Poiseuille, {label}: torque T / T_eq22', 'Table 2: 1.066, 1.038, 0.994',
                      f'{r["T"] / r["T_the"]:.3f} +- {r["Terr"] / abs(r["T_the"]):.3f} '
                      f'(T = {r["T"]:.4f} +- {r["Terr"]:.4f}, eq. 22 {r["T_the"]:.4f})', ''))
+    for label, path, L, g, nfluid, l in a.pair:
+        r = two_spheres(path, float(L), float(g), int(nfluid), float(l))
+        rows.append((f'two spheres, {label}: l = {float(l):g}, L = {float(L):g}, drag per sphere F = N g / 2 = '
+                     f'{r["F"]:.3f}, u = {r["u"]:.4f} +- {r["uerr"]:.4f}, Re = rho u R / mu = {r["Re"]:.3f}, '
+                     f'{r["nblocks"]} blocks; F / eq. 23 with the periodic correction',
+                     'Table 3: 0.953, 0.954, 0.938 at l = 2, 1.5, 1',
+                     f'{r["ratio"]:.3f} +- {r["ratio_err"]:.3f} (eq. 23 factor {r["f"]:.4f}, periodic factor '
+                     f'1/{r["corr"]:.4f})',
+                     f'mean force measured on the colloids {r["Fd"]:.3f} +- {r["Fderr"]:.3f}; fluid kBT {r["Tk"]:.4f}'))
+        rows.append((f'two spheres, {label}: torque (half difference of the two) / eq. 23 at u_eff = {r["u_eff"]:.4f}',
+                     'Table 3: 0.969, 0.974, 1.066', f'{r["T"] / r["T_the"]:.3f} +- {r["Terr"] / abs(r["T_the"]):.3f} '
+                     f'(T = {r["T"]:.4f} +- {r["Terr"]:.4f}, eq. 23 {r["T_the"]:.4f})', ''))
     print('| quantity | paper | this package | difference |')
     print('|---|---|---|---|')
     for r in rows:

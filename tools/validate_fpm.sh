@@ -15,7 +15,9 @@
 # 6 pi mu u R with Hasimoto's periodic-array correction; L = 6, 5,000 time units, and the
 # paper's L = 10), FPM_COUETTE=1 the fixed and freely spinning colloids in Couette flow between
 # walls (paper Table 1, box 15 x 6 x 8, 2,000 time units), FPM_POISEUILLE=1 the fixed colloid
-# 2 from a wall in Poiseuille flow (paper Table 2, same box); see doc/fpm_validation.md.
+# 2 from a wall in Poiseuille flow (paper Table 2, same box), FPM_PAIR=1 two fixed colloids
+# 1 apart across a uniform flow in a periodic cube of side 8 (paper Table 3, reduced box);
+# see doc/fpm_validation.md.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 lmp=${1:-}
@@ -68,8 +70,8 @@ extra() {    # name input steps [-var ...]: one run of validation/fpm/in.fpm_<in
 if [[ "${FPM_DRAG:-0}" == 1 ]]; then
   extra drag_L6 periodic_drag 500000 -var L 6 -var g 0.0133 -var u0 0.4 -var equil 5000
   scan_args+=(--drag "L = 6" drag_L6.drag 6 0.0133 647)
-  extra drag_L10 periodic_drag 200000 -var L 10 -var g 0.00204 -var u0 0.3 -var equil 30000
-  scan_args+=(--drag "L = 10" drag_L10.drag 10 0.00204 2999)
+  extra drag_L10 periodic_drag 200000 -var L 10 -var g 0.00271 -var u0 0.4 -var equil 30000
+  scan_args+=(--drag "L = 10" drag_L10.drag 10 0.00271 2999)
 fi
 if [[ "${FPM_COUETTE:-0}" == 1 ]]; then
   extra couette_U8 wall_channel 200000 -var flow couette -var U 8.0
@@ -78,5 +80,9 @@ fi
 if [[ "${FPM_POISEUILLE:-0}" == 1 ]]; then
   extra poiseuille_g0.2 wall_channel 200000 -var flow poiseuille -var g 0.2 -var h 2.0
   scan_args+=(--poiseuille "h = 2" poiseuille_g0.2 0.2 8 2)
+fi
+if [[ "${FPM_PAIR:-0}" == 1 ]]; then
+  extra pair_l1 periodic_drag 400000 -var L 8 -var l 1.0 -var g 0.01442 -var u0 0.6 -var equil 15000
+  scan_args+=(--pair "L = 8" pair_l1.drag 8 0.01442 1534 1.0)
 fi
 /usr/bin/python3 "$here/tools/fpm_analysis.py" "$out" "${scan_args[@]}" | tee "$out/results.md"
