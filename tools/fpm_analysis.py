@@ -154,7 +154,7 @@ def couette(prefix, H, zfit=2.5, mu=PAPER_MU, R=PAPER_R):
                 Re=3.0 * half * R ** 2 / mu)
 
 
-def poiseuille(prefix, g, H, h, mu=PAPER_MU, R=PAPER_R):
+def poiseuille(prefix, g, H, h, mu=PAPER_MU, R=PAPER_R, lx=15.0, ly=6.0):
     """Fixed colloid at height h above the lower wall in Poiseuille flow (Pan et al. eq. 22).
     u_h from a parabola fitted to v_x(z) away from the colloid (the .far file), inner 80 %."""
     z, vals = read_profile(prefix + '.far')
@@ -163,9 +163,11 @@ def poiseuille(prefix, g, H, h, mu=PAPER_MU, R=PAPER_R):
     c = np.polyfit(z[sel], vx[sel], 2)
     zc = -H / 2 + h
     uh = float(np.polyval(c, zc))
-    mu_fit = -3.0 * g / (2 * c[0])                          # rho g / (2 mu) = -c2
     d = np.loadtxt(prefix + '.colloid', comments='#')
     f, ferr = batch_mean(d[:, 1])
+    # far from the colloid the driving is rho g less the mean pressure gradient that balances
+    # the drag, F / (Lx Ly H): (rho g - F/V) / (2 mu) = -c2
+    mu_fit = (3.0 * g - f / (lx * ly * H)) / (-2 * c[0])
     t, terr = batch_mean(d[:, 2])
     x = R / h
     f_the = 6 * math.pi * mu * uh * R * (1 - x * x / 9) / (1 - 0.6526 * x + 0.3160 * x ** 3 - 0.242 * x ** 4)
