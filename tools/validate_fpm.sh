@@ -76,10 +76,14 @@ fi
 if [[ "${FPM_COUETTE:-0}" == 1 ]]; then
   extra couette_U8 wall_channel 200000 -var flow couette -var U 8.0
   scan_args+=(--couette "wall speed 8, 2 fixed + 2 free colloids" couette_U8 8)
+  extra couette_U8_d2 wall_channel 200000 -var flow couette -var U 8.0 -var colloid_diameter 2.0
+  scan_args+=(--couette "same, colloid moment of inertia x 4" couette_U8_d2 8)
 fi
 if [[ "${FPM_POISEUILLE:-0}" == 1 ]]; then
   extra poiseuille_g0.2 wall_channel 200000 -var flow poiseuille -var g 0.2 -var h 2.0
   scan_args+=(--poiseuille "h = 2" poiseuille_g0.2 0.2 8 2)
+  extra poiseuille_g0.05 wall_channel 200000 -var flow poiseuille -var g 0.05 -var h 2.0
+  scan_args+=(--poiseuille "h = 2" poiseuille_g0.05 0.05 8 2)
 fi
 if [[ "${FPM_PAIR:-0}" == 1 ]]; then
   extra pair_l1 periodic_drag 400000 -var L 8 -var l 1.0 -var g 0.01442 -var u0 0.6 -var equil 15000
