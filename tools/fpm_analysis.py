@@ -112,7 +112,7 @@ def drag_radius(zeta, mu, L):
     return r
 
 
-def periodic_drag(path, L, g, nfluid, mu=PAPER_MU, R=PAPER_R):
+def periodic_drag(path, L, g, nfluid, mu=PAPER_MU, R=PAPER_R, dt=0.01):
     """Fixed colloid in a periodic cube, fluid driven by g per fluid atom. Columns of the block
     file: step, fluid <v_x>, colloid f_x, f_y, f_z, torque_y, fluid kBT about its mean flow."""
     d = np.loadtxt(path, comments='#')
@@ -120,10 +120,17 @@ def periodic_drag(path, L, g, nfluid, mu=PAPER_MU, R=PAPER_R):
     u, uerr = batch_mean(d[:, 1] * nfluid / natoms)       # superficial velocity
     fd, fderr = batch_mean(d[:, 2])                        # measured force on the colloid
     force = nfluid * g                                     # steady-state momentum balance
+    # the fluid's total momentum is the slow variable: variance kBT / M, relaxation time
+    # tau = M u / F; the standard error of its mean over a run t is sqrt(kBT/M) sqrt(2 tau / t).
+    # Batches shorter than a few tau underestimate it (L = 10), so the larger error is used.
+    t_run = (d[-1, 0] - d[0, 0] + (d[1, 0] - d[0, 0])) * dt
+    tau = nfluid * u / force
+    uerr_model = math.sqrt(KT / nfluid) * math.sqrt(2 * tau / t_run) * nfluid / natoms
+    uerr = max(uerr, uerr_model)
     phi = 4 * math.pi * R ** 3 / (3 * L ** 3)
     k = hasimoto_k(phi)
     stokes = 6 * math.pi * mu * u * R
-    return dict(u=u, uerr=uerr, F=force, Fd=fd, Fderr=fderr, phi=phi, K=k, stokes=stokes,
+    return dict(u=u, uerr=uerr, tau=tau, uerr_model=uerr_model, F=force, Fd=fd, Fderr=fderr, phi=phi, K=k, stokes=stokes,
                 ratio=force / (stokes * k), ratio_err=force / (stokes * k) * uerr / u,
                 ratio_d=fd / (stokes * k), ratio_d_err=fderr / (stokes * k),
                 R_drag=drag_radius(force / u, mu, L), T=float(d[:, 6].mean()), nblocks=len(d),
@@ -273,7 +280,8 @@ def main():
                      f'Re = rho u R / mu = {r["Re"]:.3f}, {r["nblocks"]} blocks',
                      'u within 1.2 % of F/(6 pi mu R) (L = 10, u = 0.2986)',
                      f'{r["ratio"]:.3f} +- {r["ratio_err"]:.3f} (mean force measured on the colloid {r["Fd"]:.3f} +- '
-                     f'{r["Fderr"]:.3f})',
+                     f'{r["Fderr"]:.3f}; momentum relaxation time {r["tau"]:.0f}, model error of u '
+                     f'{r["uerr_model"]:.4f})',
                      f'drag radius {r["R_drag"]:.4f} (paper 0.2737), uncorrected F/(6 pi mu u R) = '
                      f'{r["F"] / r["stokes"]:.3f}, fluid kBT {r["T"]:.4f}'))
     for label, prefix, H in a.couette:
