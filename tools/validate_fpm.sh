@@ -90,5 +90,7 @@ if [[ "${FPM_PAIR:-0}" == 1 ]]; then
   scan_args+=(--pair "L = 8" pair_l1.drag 8 0.01442 1534 1.0)
   extra pair_l1_slow periodic_drag 400000 -var L 8 -var l 1.0 -var g 0.00805 -var u0 0.335 -var equil 15000
   scan_args+=(--pair "L = 8, paper's u" pair_l1_slow.drag 8 0.00805 1534 1.0)
+  extra pair_l1_L10 periodic_drag 200000 -var L 10 -var l 1.0 -var g 0.0071 -var u0 0.6 -var equil 10000
+  scan_args+=(--pair "L = 10" pair_l1_L10.drag 10 0.0071 2998 1.0)
 fi
 /usr/bin/python3 "$here/tools/fpm_analysis.py" "$out" "${scan_args[@]}" | tee "$out/results.md"
