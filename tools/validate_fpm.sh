@@ -16,7 +16,7 @@
 # paper's L = 10), FPM_COUETTE=1 the fixed and freely spinning colloids in Couette flow between
 # walls (paper Table 1, box 15 x 6 x 8, 2,000 time units), FPM_POISEUILLE=1 the fixed colloid
 # 2 from a wall in Poiseuille flow (paper Table 2, same box), FPM_PAIR=1 two fixed colloids
-# 1 apart across a uniform flow in a periodic cube of side 8 (paper Table 3, reduced box);
+# 1 apart across a uniform flow in periodic cubes of side 8 and 10 (paper Table 3, reduced box);
 # see doc/fpm_validation.md.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
