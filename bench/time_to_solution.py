@@ -85,7 +85,7 @@ def main():
                 kT, cost, kT_friction = run(args.lmp, args.plugin, pair, integrator, mass, dt, length,
                                             workdir, ranks=args.ranks)
                 shown = "fails" if kT is None else ("n/a" if "overdamped" in integrator else f"{kT:.4f}")
-                shown_friction = "" if kT_friction is None else f"{kT_friction:.4f}"
+                shown_friction = "" if kT_friction is None or "overdamped" in integrator else f"{kT_friction:.4f}"
                 lines.append(f"| {mass} | {label} | {dt} | {shown} | {shown_friction} | "
                              f"{'' if cost is None else f'{cost:.1f}'} |")
                 print(lines[-1], flush=True)
