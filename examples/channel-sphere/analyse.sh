@@ -28,7 +28,23 @@ $PY $T radius wall_radius.compliant_H1_rmax3_rigidno wall_radius.compliant_H8_rm
 echo "== wall radius, every block (the wall is still moving)"
 $PY $T radius --each --discard 0 wall_radius.compliant_H1_rmax3_rigidno --png $F/channel_sphere_radius_H1.png
 $PY $T radius --each --discard 0 wall_radius.compliant_H8_rmax3_rigidno_r2 --png $F/channel_sphere_radius_H8.png
+echo "== compliant channel, springs with rest length (fene/expand); U = core fluid velocity"
+$PY $T drag --velocity v_vcore drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno_rest \
+    drag.compliant_H8_rmax3_rigidno_rest drag.compliant_H8_rmax3_rigidno_rest_diag \
+    drag.compliant_H1_rmax3_rigidno_rest_diag_outer \
+    drag.compliant_H8_rmax3_rigidno_rest_diag_outer
+echo "== wall radius, springs with rest length"
+$PY $T radius wall_radius.compliant_H1_rmax3_rigidno_rest wall_radius.compliant_H8_rmax3_rigidno_rest \
+    wall_radius.compliant_H8_rmax3_rigidno_rest_diag \
+    wall_radius.compliant_H1_rmax3_rigidno_rest_diag_outer wall_radius.compliant_H8_rmax3_rigidno_rest_diag_outer \
+    wall_radius.compliant_H8_rmax3_rigidyes
+$PY $T radius wall_radius.compliant_H1_rmax3_rigidno_rest_diag_outer wall_radius.compliant_H8_rmax3_rigidno_rest_diag_outer \
+    wall_radius.compliant_H8_rmax3_rigidyes --png $F/channel_sphere_radius_outer.png
+$PY $T radius --each --discard 0 wall_radius.compliant_H8_rmax3_rigidno_rest_diag --png $F/channel_sphere_radius_H8_diag_ends.png
 echo "== core velocity and core fluid count against time (steps, v_vcore, v_ncore), every 1000 steps"
-for f in drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno drag.compliant_H8_rmax3_rigidno_r2; do
+for f in drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno drag.compliant_H8_rmax3_rigidno_r2 \
+         drag.compliant_H1_rmax3_rigidno_rest drag.compliant_H8_rmax3_rigidno_rest drag.compliant_H8_rmax3_rigidno_rest_diag \
+         drag.compliant_H1_rmax3_rigidno_rest_diag_outer \
+         drag.compliant_H8_rmax3_rigidno_rest_diag_outer; do
     echo "$f:"; awk '!/^#/ && $1 % 1000 == 0 {printf "  %d %.3f %.0f\n", $1, $13, $12}' $f
 done
