@@ -33,6 +33,10 @@ $PY $T drag --velocity v_vcore drag.compliant_H8_rmax3_rigidyes drag.compliant_H
     drag.compliant_H8_rmax3_rigidno_rest drag.compliant_H8_rmax3_rigidno_rest_diag \
     drag.compliant_H1_rmax3_rigidno_rest_diag_outer \
     drag.compliant_H8_rmax3_rigidno_rest_diag_outer
+$PY $T drag --velocity v_vcore --series "frozen shell:drag.compliant_H8_rmax3_rigidyes" \
+    --series "H=8, outer layer anchored:drag.compliant_H8_rmax3_rigidno_rest_diag_outer" \
+    --series "H=1, outer layer anchored:drag.compliant_H1_rmax3_rigidno_rest_diag_outer" \
+    --title "compliant channel d/D = 0.24, r_max = 3 (length 25.2)" --png $F/channel_sphere_cd_compliant.png
 echo "== wall radius, springs with rest length"
 $PY $T radius wall_radius.compliant_H1_rmax3_rigidno_rest wall_radius.compliant_H8_rmax3_rigidno_rest \
     wall_radius.compliant_H8_rmax3_rigidno_rest_diag \
