@@ -10,10 +10,13 @@ $PY $T drag --series "56 particles:drag.U0.15,drag.U0.25,drag.U0.5,drag.U0.9" \
     --series "56 particles, a_sphere 18.75:drag.U0.9_a18.75" \
     --series "1 particle, rcC 1.5:drag.colloid_U0.9" --series "1 particle, rcC 1.22:drag.colloid_U0.9_rc1.22" \
     --series "1 particle, rcC 1.1:drag.colloid_U0.9_rc1.1" \
+    --series "1 particle dpd/fpm, rc 1.54:drag.colloid_fpm_U0.9_rc1.54" \
     --title "sphere between moving walls (reduced box 25 x 12.6 x 12.6)" \
     --png $F/channel_sphere_cd_shear.png
 echo "== the same, total force instead of the conservative + dissipative part"
-$PY $T drag --force total drag.U0.15 drag.U0.25 drag.U0.5 drag.U0.9 drag.U0.9_a18.75 drag.colloid_U0.9 drag.colloid_U0.9_rc1.22 drag.colloid_U0.9_rc1.1
+$PY $T drag --force total drag.U0.15 drag.U0.25 drag.U0.5 drag.U0.9 drag.U0.9_a18.75 drag.colloid_U0.9 drag.colloid_U0.9_rc1.22 drag.colloid_U0.9_rc1.1 drag.colloid_fpm_U0.9_rc1.54
+echo "== dpd/fpm colloid calibration runs (2,000 steps after 500; 5 batches)"
+$PY $T drag --discard 0.15 --batches 5 drag.colloid_fpm_cal_rc1.8_a200 drag.colloid_fpm_cal_rc1.5_a200
 echo "== rigid cylindrical channel, body force (U = mean fluid velocity)"
 $PY $T drag --series "d/D=0.19:drag.D15.75_f0.016,drag.D15.75_f0.032" --series "d/D=0.25:drag.D12_f0.027,drag.D12_f0.054" \
     --series "d/D=0.33:drag.D9_f0.045,drag.D9_f0.09" --series "between walls:drag.U0.15,drag.U0.25,drag.U0.5,drag.U0.9" \
