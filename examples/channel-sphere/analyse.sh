@@ -39,6 +39,7 @@ $PY $T drag --velocity v_vcore drag.compliant_H8_rmax3_rigidyes drag.compliant_H
 $PY $T drag --velocity v_vcore --series "frozen shell:drag.compliant_H8_rmax3_rigidyes" \
     --series "H=8, outer layer anchored:drag.compliant_H8_rmax3_rigidno_rest_diag_outer" \
     --series "H=1, outer layer anchored:drag.compliant_H1_rmax3_rigidno_rest_diag_outer" \
+    --series "H=8, r_max=1.02, outer layer anchored:drag.compliant_H8_rmax1.02_rigidno_rest_diag_outer" \
     --title "compliant channel d/D = 0.24, r_max = 3 (length 25.2)" --png $F/channel_sphere_cd_compliant.png
 echo "== wall radius, springs with rest length"
 $PY $T radius wall_radius.compliant_H1_rmax3_rigidno_rest wall_radius.compliant_H8_rmax3_rigidno_rest \
@@ -46,12 +47,12 @@ $PY $T radius wall_radius.compliant_H1_rmax3_rigidno_rest wall_radius.compliant_
     wall_radius.compliant_H1_rmax3_rigidno_rest_diag_outer wall_radius.compliant_H8_rmax3_rigidno_rest_diag_outer \
     wall_radius.compliant_H8_rmax3_rigidyes
 $PY $T radius wall_radius.compliant_H1_rmax3_rigidno_rest_diag_outer wall_radius.compliant_H8_rmax3_rigidno_rest_diag_outer \
-    wall_radius.compliant_H8_rmax3_rigidyes --png $F/channel_sphere_radius_outer.png
+    wall_radius.compliant_H8_rmax1.02_rigidno_rest_diag_outer wall_radius.compliant_H8_rmax3_rigidyes --png $F/channel_sphere_radius_outer.png
 $PY $T radius --each --discard 0 wall_radius.compliant_H8_rmax3_rigidno_rest_diag --png $F/channel_sphere_radius_H8_diag_ends.png
 echo "== core velocity and core fluid count against time (steps, v_vcore, v_ncore), every 1000 steps"
 for f in drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno drag.compliant_H8_rmax3_rigidno_r2 \
          drag.compliant_H1_rmax3_rigidno_rest drag.compliant_H8_rmax3_rigidno_rest drag.compliant_H8_rmax3_rigidno_rest_diag \
          drag.compliant_H1_rmax3_rigidno_rest_diag_outer \
-         drag.compliant_H8_rmax3_rigidno_rest_diag_outer; do
+         drag.compliant_H8_rmax3_rigidno_rest_diag_outer drag.compliant_H8_rmax1.02_rigidno_rest_diag_outer; do
     echo "$f:"; awk '!/^#/ && $1 % 1000 == 0 {printf "  %d %.3f %.0f\n", $1, $13, $12}' $f
 done
