@@ -10,10 +10,13 @@ $PY $T drag --series "56 particles:drag.U0.15,drag.U0.25,drag.U0.5,drag.U0.9" \
     --series "56 particles, a_sphere 18.75:drag.U0.9_a18.75" \
     --series "1 particle, rcC 1.5:drag.colloid_U0.9" --series "1 particle, rcC 1.22:drag.colloid_U0.9_rc1.22" \
     --series "1 particle, rcC 1.1:drag.colloid_U0.9_rc1.1" \
+    --series "1 particle dpd/fpm, rc 1.54:drag.colloid_fpm_U0.9_rc1.54" \
     --title "sphere between moving walls (reduced box 25 x 12.6 x 12.6)" \
     --png $F/channel_sphere_cd_shear.png
 echo "== the same, total force instead of the conservative + dissipative part"
-$PY $T drag --force total drag.U0.15 drag.U0.25 drag.U0.5 drag.U0.9 drag.U0.9_a18.75 drag.colloid_U0.9 drag.colloid_U0.9_rc1.22 drag.colloid_U0.9_rc1.1
+$PY $T drag --force total drag.U0.15 drag.U0.25 drag.U0.5 drag.U0.9 drag.U0.9_a18.75 drag.colloid_U0.9 drag.colloid_U0.9_rc1.22 drag.colloid_U0.9_rc1.1 drag.colloid_fpm_U0.9_rc1.54
+echo "== dpd/fpm colloid calibration runs (2,000 steps after 500; 5 batches)"
+$PY $T drag --discard 0.15 --batches 5 drag.colloid_fpm_cal_rc1.8_a200 drag.colloid_fpm_cal_rc1.5_a200
 echo "== rigid cylindrical channel, body force (U = mean fluid velocity)"
 $PY $T drag --series "d/D=0.19:drag.D15.75_f0.016,drag.D15.75_f0.032" --series "d/D=0.25:drag.D12_f0.027,drag.D12_f0.054" \
     --series "d/D=0.33:drag.D9_f0.045,drag.D9_f0.09" --series "between walls:drag.U0.15,drag.U0.25,drag.U0.5,drag.U0.9" \
@@ -28,7 +31,28 @@ $PY $T radius wall_radius.compliant_H1_rmax3_rigidno wall_radius.compliant_H8_rm
 echo "== wall radius, every block (the wall is still moving)"
 $PY $T radius --each --discard 0 wall_radius.compliant_H1_rmax3_rigidno --png $F/channel_sphere_radius_H1.png
 $PY $T radius --each --discard 0 wall_radius.compliant_H8_rmax3_rigidno_r2 --png $F/channel_sphere_radius_H8.png
+echo "== compliant channel, springs with rest length (fene/expand); U = core fluid velocity"
+$PY $T drag --velocity v_vcore drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno_rest \
+    drag.compliant_H8_rmax3_rigidno_rest drag.compliant_H8_rmax3_rigidno_rest_diag \
+    drag.compliant_H1_rmax3_rigidno_rest_diag_outer \
+    drag.compliant_H8_rmax3_rigidno_rest_diag_outer
+$PY $T drag --velocity v_vcore --series "frozen shell:drag.compliant_H8_rmax3_rigidyes" \
+    --series "H=8, outer layer anchored:drag.compliant_H8_rmax3_rigidno_rest_diag_outer" \
+    --series "H=1, outer layer anchored:drag.compliant_H1_rmax3_rigidno_rest_diag_outer" \
+    --series "H=8, r_max=1.02, outer layer anchored:drag.compliant_H8_rmax1.02_rigidno_rest_diag_outer" \
+    --title "compliant channel d/D = 0.24, r_max = 3 (length 25.2)" --png $F/channel_sphere_cd_compliant.png
+echo "== wall radius, springs with rest length"
+$PY $T radius wall_radius.compliant_H1_rmax3_rigidno_rest wall_radius.compliant_H8_rmax3_rigidno_rest \
+    wall_radius.compliant_H8_rmax3_rigidno_rest_diag \
+    wall_radius.compliant_H1_rmax3_rigidno_rest_diag_outer wall_radius.compliant_H8_rmax3_rigidno_rest_diag_outer \
+    wall_radius.compliant_H8_rmax3_rigidyes
+$PY $T radius wall_radius.compliant_H1_rmax3_rigidno_rest_diag_outer wall_radius.compliant_H8_rmax3_rigidno_rest_diag_outer \
+    wall_radius.compliant_H8_rmax1.02_rigidno_rest_diag_outer wall_radius.compliant_H8_rmax3_rigidyes --png $F/channel_sphere_radius_outer.png
+$PY $T radius --each --discard 0 wall_radius.compliant_H8_rmax3_rigidno_rest_diag --png $F/channel_sphere_radius_H8_diag_ends.png
 echo "== core velocity and core fluid count against time (steps, v_vcore, v_ncore), every 1000 steps"
-for f in drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno drag.compliant_H8_rmax3_rigidno_r2; do
+for f in drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno drag.compliant_H8_rmax3_rigidno_r2 \
+         drag.compliant_H1_rmax3_rigidno_rest drag.compliant_H8_rmax3_rigidno_rest drag.compliant_H8_rmax3_rigidno_rest_diag \
+         drag.compliant_H1_rmax3_rigidno_rest_diag_outer \
+         drag.compliant_H8_rmax3_rigidno_rest_diag_outer drag.compliant_H8_rmax1.02_rigidno_rest_diag_outer; do
     echo "$f:"; awk '!/^#/ && $1 % 1000 == 0 {printf "  %d %.3f %.0f\n", $1, $13, $12}' $f
 done
