@@ -9,6 +9,7 @@ s = 1/2, kBT = 1). Stock = pair dpd/ext (ws = s/2) + fix nve.
 """
 import argparse
 import os
+import sys
 import re
 import subprocess
 import tempfile
@@ -25,11 +26,15 @@ CASES = [
     ("dpd/gen + etd scheme implicit", "gen", "etd scheme implicit", 0.01, [0.002, 0.003, 0.0035, 0.004, 0.005]),
     ("dpd/gen + etd scheme implicit tol 1e-4", "gen", "etd scheme implicit tol 1e-4", 0.01,
      [0.003, 0.0035, 0.004, 0.005]),
+    ("dpd/gen + etd scheme implicit tol 1e-4 start velocity", "gen", "etd scheme implicit tol 1e-4 start velocity",
+     0.01, [0.003, 0.0035, 0.004, 0.005]),
     ("stock dpd/ext + nve", "stock", "nve", 0.001, [0.00003, 0.00005, 0.00007, 0.0001]),
     ("dpd/gen + etd (diagonal)", "gen", "etd", 0.001, [0.00005, 0.0001, 0.0002]),
     ("dpd/gen + etd scheme implicit", "gen", "etd scheme implicit", 0.001, [0.0005, 0.0007, 0.001, 0.0012, 0.0015]),
     ("dpd/gen + etd scheme implicit tol 1e-4", "gen", "etd scheme implicit tol 1e-4", 0.001,
      [0.001, 0.0012, 0.0015]),
+    ("dpd/gen + etd scheme implicit tol 1e-4 start velocity", "gen", "etd scheme implicit tol 1e-4 start velocity",
+     0.001, [0.001, 0.0012, 0.0015]),
     ("stock dpd/ext + nve", "stock", "nve", 0.0001, [0.000003, 0.000005, 0.000007, 0.00001]),
     ("dpd/gen + etd scheme implicit", "gen", "etd scheme implicit", 0.0001, [0.0001, 0.0002, 0.0003, 0.0005]),
     # the zero-mass limit has no temperature to judge (its velocities are mobilities' output):
@@ -56,6 +61,8 @@ def run(lmp, plugin, pair, integrator, mass, dt, time, workdir, equil=None, rank
     loops = re.findall(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps", text)
     friction = re.search(r"FRICTION_STEP kBT=([0-9.]+)", text)
     if done.returncode != 0 or not m or len(loops) < 2:
+        print(f"run failed (exit {done.returncode}): {' '.join(cmd)}", file=sys.stderr)
+        print("\n".join(text.splitlines()[-5:]), file=sys.stderr)
         return None, None, None
     seconds, steps = float(loops[-1][0]), int(loops[-1][1])
     return float(m.group(1)), seconds / (steps * dt), float(friction.group(1)) if friction else None
@@ -71,6 +78,8 @@ def main():
     parser.add_argument("--ranks", type=int, default=1, help="MPI ranks")
     parser.add_argument("--masses", type=float, nargs="*", default=None, help="only these masses")
     args = parser.parse_args()
+    # the runs work in temporary directories: relative paths would not resolve there
+    args.plugin = os.path.abspath(args.plugin)
     cases = [c for c in CASES if args.masses is None or c[3] in args.masses]
     lines = [f"MPI ranks: {args.ranks}", "", "| mass | integrator | dt | kBT | kBT after the friction step | s per time unit |",
              "|---|---|---|---|---|---|"]

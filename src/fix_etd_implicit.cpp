@@ -36,7 +36,7 @@ using namespace FixConst;
 
 
 FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), overdamped(false), midpoint(true), tolerance(1e-6), max_iterations(200), dt(0.0),
+    Fix(lmp, narg, arg), overdamped(false), midpoint(true), warm_start(false), tolerance(1e-6), max_iterations(200), dt(0.0),
     list(nullptr), dofs(3), any_fixed_partner(false), comm_vector(nullptr), comm_width(3),
     split_requested(false), split_rows(0), split(nullptr), last_iterations(0), last_residual(0.0),
     iterations_sum(0.0), solves(0), predictor_steps(0)
@@ -69,6 +69,10 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
       if (value == "yes") midpoint = true;
       else if (value == "no") midpoint = false;
       else error->all(FLERR, "Illegal fix etd command: midpoint must be yes or no, got {}", value);
+    } else if (key == "start") {
+      if (value == "velocity") warm_start = true;
+      else if (value == "jacobi") warm_start = false;
+      else error->all(FLERR, "Illegal fix etd command: start must be velocity or jacobi, got {}", value);
     } else if (key == "maxiter") {
       max_iterations = utils::inumeric(FLERR, value.c_str(), false, lmp);
       if (max_iterations < 1)
@@ -376,7 +380,8 @@ void FixETDImplicit::random_impulse(double scale, std::vector<double> &impulse)
 // outside the group held at zero (their velocities are already in rhs). With 'deflate' the
 // uniform translation (null space of G) is projected out of rhs and of the solution.
 bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double> &solution,
-                           double mass_weight, double friction_weight, bool deflate, bool singular_ok)
+                           double mass_weight, double friction_weight, bool deflate, bool singular_ok,
+                           const std::vector<double> *start)
 {
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
@@ -445,13 +450,20 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
     if (deflate) remove_mean(au);
   };
 
-  // start from the block-Jacobi solution
   solution.assign(n, 0.0);
-  for (int b = 0; b < nblocks; b++)
-    for (int k = 0; k < 3; k++) {
-      const double *m = &block_inverse[9 * b + 3 * k];
-      solution[3 * b + k] = m[0] * rhs[3 * b] + m[1] * rhs[3 * b + 1] + m[2] * rhs[3 * b + 2];
-    }
+  if (start) {
+    // from the given start (the old velocities): CG's error then starts in the local, quickly
+    // converging modes, and the slow long-wavelength flow is right from the first iterate
+    for (int k = 0; k < n; k++)
+      if (inv_diag[k] != 0.0) solution[k] = (*start)[k];
+  } else {
+    // from the block-Jacobi solution
+    for (int b = 0; b < nblocks; b++)
+      for (int k = 0; k < 3; k++) {
+        const double *m = &block_inverse[9 * b + 3 * k];
+        solution[3 * b + k] = m[0] * rhs[3 * b] + m[1] * rhs[3 * b + 1] + m[2] * rhs[3 * b + 2];
+      }
+  }
   const etd::SolverResult result = etd::conjugate_gradient(
       n, apply, global_sum, inv_diag.data(), rhs.data(), solution.data(), tolerance, max_iterations,
       block_inverse.data(), [&](double *vec) {
@@ -507,7 +519,15 @@ void FixETDImplicit::friction_noise_step()
       rhs[d] = inertia[d] * *dof_pointer(i, k) - 0.5 * h * gu[d] + impulse[d];
     }
   std::vector<double> &solution = work.solution;
-  solve(rhs, solution, 1.0, 0.5 * h, false);
+  if (warm_start) {
+    std::vector<double> &start = work.start;
+    start.resize(dofs * nlocal);
+    for (int i = 0; i < nlocal; i++)
+      for (int k = 0; k < dofs; k++) start[dofs * i + k] = *dof_pointer(i, k);
+    solve(rhs, solution, 1.0, 0.5 * h, false, false, &start);
+  } else {
+    solve(rhs, solution, 1.0, 0.5 * h, false);
+  }
 
   // The exact solution conserves the group's momentum when no pair couples it to atoms outside
   // it (the rows of G sum to zero, so sum M v' = sum rhs); an iterate leaves an error of the

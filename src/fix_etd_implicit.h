@@ -52,6 +52,7 @@ class FixETDImplicit : public Fix {
  private:
   bool overdamped;
   bool midpoint;    // overdamped: predictor-corrector (default) or a single solve
+  bool warm_start;    // CG starts from the old velocities (else from the block-Jacobi solution)
   double tolerance;
   int max_iterations;
   double dt;
@@ -76,7 +77,7 @@ class FixETDImplicit : public Fix {
   // work vectors reused from step to step (per-step allocation costs page faults at scale)
   struct Work {
     std::vector<double> masses, rhs, inv_diag, block_inverse, gu;    // solve()
-    std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia, predicted;    // the steps
+    std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia, predicted, start;    // the steps
     std::vector<double> mean, gmean;    // record_split()
     etd::CgWorkspace cg;
   } work;
@@ -108,7 +109,8 @@ class FixETDImplicit : public Fix {
   void overdamped_step();
   bool overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity, bool singular_ok);
   bool solve(const std::vector<double> &rhs, std::vector<double> &solution, double mass_weight,
-             double friction_weight, bool deflate, bool singular_ok = false);
+             double friction_weight, bool deflate, bool singular_ok = false,
+             const std::vector<double> *start = nullptr);
 };
 
 }    // namespace LAMMPS_NS

@@ -250,6 +250,37 @@ TEST(FixEtdImplicit, OverdampedStepMovesByTheStepTimesItsVelocity)
   EXPECT_GT(max_abs_diff(velocities[0], velocities[1]), 1e-6);
 }
 
+// Starting CG from the old velocities (start velocity) solves the same system: with a tight
+// tolerance the trajectory is the block-Jacobi start's. Where the old velocities already solve
+// it (a cold fluid in uniform translation: G v = 0), that start needs no iteration, while the
+// block-Jacobi start, which divides each atom's velocity by 1 + h G_ii / 2m, does. A cold fluid
+// (no conservative force, T = 0) so that the prescribed flow is the only motion.
+TEST(FixEtdImplicit, StartFromOldVelocitiesSolvesTheSameSystem)
+{
+  auto one_step = [](const std::string &velocity, const std::string &options, double *iterations) {
+    Lammps l;
+    etdtest::write_random_data(DATA, 500, 5.0, 4321, 1, 1.0);
+    l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + DATA,
+            "mass 1 0.001", "pair_style dpd/gen 0.0 1.0 555", "pair_coeff 1 1 0.0 4.5 0.5",
+            "variable wave atom sin(2.0*PI*z/5.0)", "velocity all set " + velocity,
+            "timestep 0.001", "fix 1 all etd scheme implicit " + options, "run 1 post no"});
+    if (iterations) *iterations = l.fix_vector("1", 0);
+    return l.gather("v");
+  };
+  const auto v_jacobi = one_step("v_wave 0.0 0.0", "tol 1e-12", nullptr);
+  const auto v_start = one_step("v_wave 0.0 0.0", "tol 1e-12 start velocity", nullptr);
+  double scale = 0.0;
+  for (double v : v_jacobi) scale = std::max(scale, std::fabs(v));
+  EXPECT_LT(max_abs_diff(v_jacobi, v_start), 1e-9 * scale);
+  EXPECT_GT(scale, 0.1);
+  double it_start = -1.0, it_jacobi = -1.0;
+  const auto v_moved = one_step("1.0 0.0 0.0", "tol 1e-10 start velocity", &it_start);
+  one_step("1.0 0.0 0.0", "tol 1e-10", &it_jacobi);
+  EXPECT_EQ(it_start, 0.0);
+  EXPECT_GT(it_jacobi, 2.0);
+  for (size_t k = 0; k < v_moved.size(); k++) ASSERT_NEAR(v_moved[k], k % 3 == 0 ? 1.0 : 0.0, 1e-12);
+}
+
 TEST(FixEtdImplicit, BadInputGivesClearErrors)
 {
   struct Case {
@@ -261,6 +292,7 @@ TEST(FixEtdImplicit, BadInputGivesClearErrors)
       {{"fix 1 all etd scheme implicit tol 0"}, "tol must be between 0 and 1"},
       {{"fix 1 all etd scheme implicit tol 2"}, "tol must be between 0 and 1"},
       {{"fix 1 all etd scheme implicit maxiter 0"}, "maxiter must be a positive integer"},
+      {{"fix 1 all etd scheme implicit start old"}, "start must be velocity or jacobi"},
       {{"fix 1 all etd scheme implicit overdamped maybe"}, "overdamped must be yes or no"},
       {{"fix 1 all etd scheme implicit overdamped yes midpoint 1"}, "midpoint must be yes or no"},
       {{"fix 1 all etd scheme implicit order 2"}, "keyword order belongs to scheme diagonal"},
