@@ -86,6 +86,10 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
     iarg += 2;
   }
 
+  if (overdamped && warm_start)
+    error->all(FLERR, "Illegal fix etd command: start velocity needs overdamped no (the zero-mass "
+               "solve starts from the block-Jacobi solution)");
+
   // per-atom split for compute dpd/split, kept with the atoms when they migrate or are sorted
   maxexchange = 6;
   grow_arrays(atom->nmax);

@@ -293,6 +293,7 @@ TEST(FixEtdImplicit, BadInputGivesClearErrors)
       {{"fix 1 all etd scheme implicit tol 2"}, "tol must be between 0 and 1"},
       {{"fix 1 all etd scheme implicit maxiter 0"}, "maxiter must be a positive integer"},
       {{"fix 1 all etd scheme implicit start old"}, "start must be velocity or jacobi"},
+      {{"fix 1 all etd scheme implicit overdamped yes start velocity"}, "start velocity needs overdamped no"},
       {{"fix 1 all etd scheme implicit overdamped maybe"}, "overdamped must be yes or no"},
       {{"fix 1 all etd scheme implicit overdamped yes midpoint 1"}, "midpoint must be yes or no"},
       {{"fix 1 all etd scheme implicit order 2"}, "keyword order belongs to scheme diagonal"},
