@@ -456,8 +456,9 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
 
   solution.assign(n, 0.0);
   if (start) {
-    // from the given start (the old velocities): CG's error then starts in the local, quickly
-    // converging modes, and the slow long-wavelength flow is right from the first iterate
+    // from the given start (the old velocities): the collective motion that the block-Jacobi
+    // start damps is kept, and the error left is in local relative motion, which the
+    // preconditioner removes fastest (doc/fix_etd.rst: accurate at loose tolerances)
     for (int k = 0; k < n; k++)
       if (inv_diag[k] != 0.0) solution[k] = (*start)[k];
   } else {
