@@ -524,15 +524,9 @@ void FixETDImplicit::friction_noise_step()
       rhs[d] = inertia[d] * *dof_pointer(i, k) - 0.5 * h * gu[d] + impulse[d];
     }
   std::vector<double> &solution = work.solution;
-  if (warm_start) {
-    std::vector<double> &start = work.start;
-    start.resize(dofs * nlocal);
-    for (int i = 0; i < nlocal; i++)
-      for (int k = 0; k < dofs; k++) start[dofs * i + k] = *dof_pointer(i, k);
-    solve(rhs, solution, 1.0, 0.5 * h, false, false, &start);
-  } else {
-    solve(rhs, solution, 1.0, 0.5 * h, false);
-  }
+  // u holds the group's old velocities (the rows solve() keeps; the doubled velocities of atoms
+  // outside the group are in rows it holds at zero)
+  solve(rhs, solution, 1.0, 0.5 * h, false, false, warm_start ? &u : nullptr);
 
   // The exact solution conserves the group's momentum when no pair couples it to atoms outside
   // it (the rows of G sum to zero, so sum M v' = sum rhs); an iterate leaves an error of the

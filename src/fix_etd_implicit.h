@@ -77,7 +77,7 @@ class FixETDImplicit : public Fix {
   // work vectors reused from step to step (per-step allocation costs page faults at scale)
   struct Work {
     std::vector<double> masses, rhs, inv_diag, block_inverse, gu;    // solve()
-    std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia, predicted, start;    // the steps
+    std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia, predicted;    // the steps
     std::vector<double> mean, gmean;    // record_split()
     etd::CgWorkspace cg;
   } work;
