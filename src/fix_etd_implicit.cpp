@@ -15,6 +15,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "dpd_kernel.h"
 #include "dpd_style_lookup.h"
 #include "fpm_kernel.h"
@@ -37,7 +38,7 @@ using namespace FixConst;
 
 FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), overdamped(false), midpoint(true), warm_start(false), tolerance(1e-6), max_iterations(200), dt(0.0),
-    list(nullptr), dofs(3), any_fixed_partner(false), comm_vector(nullptr), comm_width(3),
+    list(nullptr), dofs(3), any_fixed_partner(false), comm_nslots(0), comm_positions(false),
     split_requested(false), split_rows(0), split(nullptr), last_iterations(0), last_residual(0.0),
     iterations_sum(0.0), solves(0), predictor_steps(0)
 {
@@ -46,8 +47,8 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
   size_vector = 5;
   extvector = 0;
   global_freq = 1;
-  comm_forward = 6;     // 3 values per atom, 6 with rotation
-  comm_reverse = 12;   // 3 or 6 per atom, 6 or 12 for the preconditioner's blocks
+  comm_forward = 9;     // positions and 3 values per atom (v), 6 with rotation (v, Omega)
+  comm_reverse = 24;   // 3 or 6 per atom twice, and 6 or 12 for the preconditioner's blocks
 
   int iarg = 3;
   while (iarg < narg) {
@@ -231,8 +232,7 @@ void FixETDImplicit::initial_integrate(int)
   }
   kick(0.5);
   drift(0.5);
-  // ghosts must see the half-drifted positions before the pair geometry is cached
-  comm->forward_comm();
+  // (friction_noise_step() brings the ghosts to the half-drifted positions)
   friction_noise_step();
   drift(0.5);
 }
@@ -346,23 +346,26 @@ void FixETDImplicit::apply_friction(const double *u, std::vector<double> &gu, bo
   } else {
     std::copy(u, u + dofs * nlocal, operand.begin());
   }
-  comm_vector = &operand;
-  comm_width = dofs;
-  etd::compat::forward_comm(comm, this);
-  const bool newton = force->newton_pair;
-  gu.resize(dofs * nall);
-  std::fill(gu.begin(), gu.end(), 0.0);
-  auto keep_j = [=](int j) { return newton || j < nlocal; };
-  etd::accumulate_friction(pairs, operand.data(), gu.data(), keep_j, dofs);
-  if (dofs == 6) etd::accumulate_fpm_friction(fpm_pairs, operand.data(), gu.data(), keep_j);
-  if (newton) {
-    comm_vector = &gu;
-    etd::compat::reverse_comm(comm, this);
-  }
+  forward_exchange({{&operand, dofs}});
+  accumulate_friction(operand.data(), gu);
+  if (force->newton_pair) reverse_sum({{&gu, dofs}});
 }
 
-// the random impulse sum_pairs B xi, times scale, on owned atoms
-void FixETDImplicit::random_impulse(double scale, std::vector<double> &impulse)
+// gu = G u over owned and ghost atoms from u given on both, before the ghosts' shares are
+// summed onto their owners
+void FixETDImplicit::accumulate_friction(const double *u, std::vector<double> &gu) const
+{
+  const int nlocal = atom->nlocal;
+  const bool newton = force->newton_pair;
+  gu.assign(dofs * (nlocal + atom->nghost), 0.0);
+  auto keep_j = [=](int j) { return newton || j < nlocal; };
+  etd::accumulate_friction(pairs, u, gu.data(), keep_j, dofs);
+  if (dofs == 6) etd::accumulate_fpm_friction(fpm_pairs, u, gu.data(), keep_j);
+}
+
+// the random impulse sum_pairs B xi, times scale, on owned atoms (with sum_over_ranks false,
+// before the ghosts' shares are summed onto their owners)
+void FixETDImplicit::random_impulse(double scale, std::vector<double> &impulse, bool sum_over_ranks)
 {
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
@@ -371,11 +374,19 @@ void FixETDImplicit::random_impulse(double scale, std::vector<double> &impulse)
   auto keep_j = [=](int j) { return newton || j < nlocal; };
   etd::accumulate_noise(pairs, pair_noise, scale, impulse.data(), keep_j, dofs);
   if (dofs == 6) etd::accumulate_fpm_noise(fpm_pairs, fpm_noise, scale, impulse.data(), keep_j);
-  if (newton) {
-    comm_vector = &impulse;
-    comm_width = dofs;
-    etd::compat::reverse_comm(comm, this);
-  }
+  if (newton && sum_over_ranks) reverse_sum({{&impulse, dofs}});
+}
+
+// each atom's 3x3 block(s) of G (6 values each, v-v and with rotation Omega-Omega), before the
+// ghosts' shares are summed onto their owners
+void FixETDImplicit::accumulate_blocks(int block_values)
+{
+  const int nlocal = atom->nlocal;
+  const bool newton = force->newton_pair;
+  diagonal.assign(block_values * (nlocal + atom->nghost), 0.0);
+  auto keep_j = [=](int j) { return newton || j < nlocal; };
+  etd::accumulate_blocks(pairs, diagonal.data(), keep_j, block_values);
+  if (dofs == 6) etd::accumulate_fpm_blocks(fpm_pairs, diagonal.data(), keep_j);
 }
 
 /* ---- the solves ------------------------------------------------------------------------ */
@@ -385,10 +396,9 @@ void FixETDImplicit::random_impulse(double scale, std::vector<double> &impulse)
 // uniform translation (null space of G) is projected out of rhs and of the solution.
 bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double> &solution,
                            double mass_weight, double friction_weight, bool deflate, bool singular_ok,
-                           const std::vector<double> *start)
+                           const std::vector<double> *start, bool blocks_summed)
 {
   const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
   const int n = dofs * nlocal;
   const int *mask = atom->mask;
   const bool newton = force->newton_pair;
@@ -399,16 +409,12 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
 
   // block-Jacobi preconditioner: each atom's 3x3 block of mass_weight M + friction_weight G
   // (per atom one 3x3 block, 6 values, or with rotation two: v-v and Omega-Omega)
+  // (blocks_summed: the caller has accumulated and summed them, with its own exchange)
   const int nblocks = n / 3;
   const int block_values = 2 * dofs;
-  diagonal.assign(block_values * nall, 0.0);
-  auto keep_j = [=](int j) { return newton || j < nlocal; };
-  etd::accumulate_blocks(pairs, diagonal.data(), keep_j, block_values);
-  if (dofs == 6) etd::accumulate_fpm_blocks(fpm_pairs, diagonal.data(), keep_j);
-  if (newton) {
-    comm_vector = &diagonal;
-    comm_width = block_values;
-    etd::compat::reverse_comm(comm, this);
+  if (!blocks_summed) {
+    accumulate_blocks(block_values);
+    if (newton) reverse_sum({{&diagonal, block_values}});
   }
   std::vector<double> &inv_diag = work.inv_diag, &block_inverse = work.block_inverse;
   inv_diag.assign(n, 0.0);
@@ -422,7 +428,7 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
   }
 
   auto global_sum = [this](double *values, int count) {
-    double sums[2];
+    double sums[16];    // conjugate_gradient sums at most 9 values at once
     MPI_Allreduce(values, sums, count, MPI_DOUBLE, MPI_SUM, world);
     for (int k = 0; k < count; k++) values[k] = sums[k];
   };
@@ -500,7 +506,6 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
 
 void FixETDImplicit::friction_noise_step()
 {
-  build_pairs();
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
   const double h = dt;
@@ -510,14 +515,25 @@ void FixETDImplicit::friction_noise_step()
   std::vector<double> &u = work.u, &gu = work.gu_rhs, &rhs = work.step_rhs, &impulse = work.impulse;
   std::vector<double> &inertia = work.inertia;
   dof_inertia(inertia);
-  u.resize(dofs * nlocal);
+  // One forward exchange brings the ghosts to the half-drifted positions and carries their
+  // velocities (u), and one reverse exchange sums G u, the random impulse and the
+  // preconditioner's blocks: every exchange is a point where the ranks wait for each other.
+  const int nall = nlocal + atom->nghost;
+  u.resize(dofs * nall);
   rhs.resize(dofs * nlocal);
-  for (int i = 0; i < nlocal; i++) {
-    const double weight = (mask[i] & groupbit) ? 1.0 : 2.0;
-    for (int k = 0; k < dofs; k++) u[dofs * i + k] = weight * *dof_pointer(i, k);
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < dofs; k++) u[dofs * i + k] = *dof_pointer(i, k);
+  forward_exchange({{&u, dofs}}, true);
+  for (int i = 0; i < nall; i++) {
+    if (mask[i] & groupbit) continue;
+    for (int k = 0; k < dofs; k++) u[dofs * i + k] *= 2.0;
   }
-  apply_friction(u.data(), gu, false);
-  random_impulse(std::sqrt(h), impulse);
+  build_pairs();
+  accumulate_friction(u.data(), gu);
+  random_impulse(std::sqrt(h), impulse, false);
+  const int block_values = 2 * dofs;
+  accumulate_blocks(block_values);
+  if (force->newton_pair) reverse_sum({{&gu, dofs}, {&impulse, dofs}, {&diagonal, block_values}});
   for (int i = 0; i < nlocal; i++)
     for (int k = 0; k < dofs; k++) {
       const int d = dofs * i + k;
@@ -526,7 +542,7 @@ void FixETDImplicit::friction_noise_step()
   std::vector<double> &solution = work.solution;
   // u holds the group's old velocities (the rows solve() keeps; the doubled velocities of atoms
   // outside the group are in rows it holds at zero)
-  solve(rhs, solution, 1.0, 0.5 * h, false, false, warm_start ? &u : nullptr);
+  solve(rhs, solution, 1.0, 0.5 * h, false, false, warm_start ? &u : nullptr, true);
 
   // The exact solution conserves the group's momentum when no pair couples it to atoms outside
   // it (the rows of G sum to zero, so sum M v' = sum rhs); an iterate leaves an error of the
@@ -686,40 +702,91 @@ double FixETDImplicit::compute_vector(int n)
   return friction_step_temperature;
 }
 
-int FixETDImplicit::pack_forward_comm(int n, int *list_, double *buf, int, int *)
+void FixETDImplicit::forward_exchange(std::initializer_list<CommSlot> slots, bool positions)
 {
-  const std::vector<double> &vec = *comm_vector;
+  comm_nslots = 0;
+  for (const CommSlot &slot : slots) {
+    slot.vector->resize(slot.width * (atom->nlocal + atom->nghost));
+    comm_slots[comm_nslots++] = slot;
+  }
+  comm_positions = positions;
+  etd::compat::forward_comm(comm, this);
+  comm_positions = false;
+}
+
+void FixETDImplicit::reverse_sum(std::initializer_list<CommSlot> slots)
+{
+  comm_nslots = 0;
+  for (const CommSlot &slot : slots) comm_slots[comm_nslots++] = slot;
+  etd::compat::reverse_comm(comm, this);
+}
+
+int FixETDImplicit::pack_forward_comm(int n, int *list_, double *buf, int pbc_flag, int *pbc)
+{
   int m = 0;
+  // the positions as LAMMPS's own exchange sends them (AtomVec::pack_comm): shifted across a
+  // periodic boundary
+  double shift[3] = {0.0, 0.0, 0.0};
+  if (comm_positions && pbc_flag) {
+    if (domain->triclinic == 0) {
+      shift[0] = pbc[0] * domain->xprd;
+      shift[1] = pbc[1] * domain->yprd;
+    } else {
+      shift[0] = pbc[0] * domain->xprd + pbc[5] * domain->xy + pbc[4] * domain->xz;
+      shift[1] = pbc[1] * domain->yprd + pbc[3] * domain->yz;
+    }
+    shift[2] = pbc[2] * domain->zprd;
+  }
+  double **x = atom->x;
   for (int i = 0; i < n; i++) {
     const int j = list_[i];
-    for (int k = 0; k < comm_width; k++) buf[m++] = vec[comm_width * j + k];
+    if (comm_positions)
+      for (int k = 0; k < 3; k++) buf[m++] = x[j][k] + shift[k];
+    for (int s = 0; s < comm_nslots; s++) {
+      const int width = comm_slots[s].width;
+      const double *values = comm_slots[s].vector->data() + width * j;
+      for (int k = 0; k < width; k++) buf[m++] = values[k];
+    }
   }
   return m;
 }
 
 void FixETDImplicit::unpack_forward_comm(int n, int first, double *buf)
 {
-  std::vector<double> &vec = *comm_vector;
+  double **x = atom->x;
   int m = 0;
-  for (int i = first; i < first + n; i++)
-    for (int k = 0; k < comm_width; k++) vec[comm_width * i + k] = buf[m++];
+  for (int i = first; i < first + n; i++) {
+    if (comm_positions)
+      for (int k = 0; k < 3; k++) x[i][k] = buf[m++];
+    for (int s = 0; s < comm_nslots; s++) {
+      const int width = comm_slots[s].width;
+      double *values = comm_slots[s].vector->data() + width * i;
+      for (int k = 0; k < width; k++) values[k] = buf[m++];
+    }
+  }
 }
 
 int FixETDImplicit::pack_reverse_comm(int n, int first, double *buf)
 {
-  const std::vector<double> &vec = *comm_vector;
   int m = 0;
   for (int i = first; i < first + n; i++)
-    for (int k = 0; k < comm_width; k++) buf[m++] = vec[comm_width * i + k];
+    for (int s = 0; s < comm_nslots; s++) {
+      const int width = comm_slots[s].width;
+      const double *values = comm_slots[s].vector->data() + width * i;
+      for (int k = 0; k < width; k++) buf[m++] = values[k];
+    }
   return m;
 }
 
 void FixETDImplicit::unpack_reverse_comm(int n, int *list_, double *buf)
 {
-  std::vector<double> &vec = *comm_vector;
   int m = 0;
   for (int i = 0; i < n; i++)
-    for (int k = 0; k < comm_width; k++) vec[comm_width * list_[i] + k] += buf[m++];
+    for (int s = 0; s < comm_nslots; s++) {
+      const int width = comm_slots[s].width;
+      double *values = comm_slots[s].vector->data() + width * list_[i];
+      for (int k = 0; k < width; k++) values[k] += buf[m++];
+    }
 }
 
 void FixETDImplicit::grow_arrays(int nmax)

@@ -8,6 +8,7 @@
 #include "dpd_random.h"
 #include "friction_operator.h"
 
+#include <initializer_list>
 #include <vector>
 
 namespace etd {
@@ -68,11 +69,22 @@ class FixETDImplicit : public Fix {
   std::vector<double> fpm_noise;                  // and their random forces (3 per pair)
   bool any_fixed_partner;                  // some pair couples to an atom outside the group
 
-  // per-atom vectors over owned + ghost atoms, dofs values each; comm_vector is the one the
-  // forward/reverse communication moves, comm_width values per atom
+  // per-atom vectors over owned + ghost atoms, dofs values each
   std::vector<double> operand, diagonal;
-  std::vector<double> *comm_vector;
-  int comm_width;
+  // What the next forward/reverse communication moves: per atom, 'width' values of each slot's
+  // vector, in one message for all slots (each exchange is a point where the ranks wait for
+  // each other); a forward exchange may also carry the positions (with the periodic shift).
+  struct CommSlot {
+    std::vector<double> *vector;
+    int width;
+  };
+  static constexpr int max_comm_slots = 3;
+  CommSlot comm_slots[max_comm_slots];
+  int comm_nslots;
+  bool comm_positions;
+  void forward_exchange(std::initializer_list<CommSlot> slots, bool positions = false);
+  void reverse_sum(std::initializer_list<CommSlot> slots);
+  void accumulate_blocks(int block_values);
 
   // work vectors reused from step to step (per-step allocation costs page faults at scale)
   struct Work {
@@ -101,16 +113,17 @@ class FixETDImplicit : public Fix {
   void build_pairs();
   bool add_fpm_pair(const etd::FpmCoefficients &c, int i, int j, const double d[3], double rsq,
                     double factor, tagint tag_i, tagint tag_j, std::int64_t step);
-  void random_impulse(double scale, std::vector<double> &impulse);
+  void random_impulse(double scale, std::vector<double> &impulse, bool sum_over_ranks = true);
   void dof_inertia(std::vector<double> &inertia) const;
   double *dof_pointer(int i, int k) const;
   void apply_friction(const double *u, std::vector<double> &gu, bool group_only);
+  void accumulate_friction(const double *u, std::vector<double> &gu) const;
   void friction_noise_step();
   void overdamped_step();
   bool overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity, bool singular_ok);
   bool solve(const std::vector<double> &rhs, std::vector<double> &solution, double mass_weight,
              double friction_weight, bool deflate, bool singular_ok = false,
-             const std::vector<double> *start = nullptr);
+             const std::vector<double> *start = nullptr, bool blocks_summed = false);
 };
 
 }    // namespace LAMMPS_NS

@@ -214,16 +214,15 @@ inline bool invert_block(const double *block, double shift, double scale, double
   return true;
 }
 
-struct SolverResult {
-  int iterations = 0;
-  double relative_residual = 0.0;
-  bool converged = false;
-};
-
-// Jacobi-preconditioned conjugate gradients for A x = b over n unknowns that this rank owns.
+// Preconditioned conjugate gradients for A x = b over n unknowns that this rank owns, in the
+// single-reduction form of Chronopoulos and Gear (J. Comput. Appl. Math. 25, 1989): each
+// iteration applies A once and sums all its dot products over the ranks in ONE reduction
+// (the textbook form needs two), since on several ranks every reduction is a point where all
+// ranks wait for the slowest. The norm of the next residual is predicted from that same
+// reduction, so convergence is seen before the next application of A, not after it; a
+// predicted convergence is confirmed with the true norm of the recursively updated residual.
 //   apply(p, Ap): Ap = A p (the caller communicates ghosts as needed)
-//   global_sum(values, count): sums the count values over all ranks, in place (one reduction
-//   for the pair of dot products each iteration needs)
+//   global_sum(values, count): sums the count values (at most 8) over all ranks, in place
 // x holds the starting guess on entry. Unknowns with inv_diag = 0 are held at their start
 // value (frozen components, atoms without friction in the zero-mass limit).
 struct NoProjection {
@@ -233,7 +232,13 @@ struct NoProjection {
 // The solver's vectors, kept by the caller between solves: allocating them afresh every step
 // costs page faults that grow with the system.
 struct CgWorkspace {
-  std::vector<double> r, z, p, ap;
+  std::vector<double> r, z, p, w, s;
+};
+
+struct SolverResult {
+  int iterations = 0;
+  double relative_residual = 0.0;
+  bool converged = false;
 };
 
 // block_inverse (optional, 9 values per atom, n = 3 atoms): block-Jacobi preconditioning, which
@@ -253,74 +258,97 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
   CgWorkspace &work = workspace ? *workspace : local;
   work.r.resize(n);
   work.z.resize(n);
-  work.p.resize(n);
-  work.ap.resize(n);
-  std::vector<double> &r = work.r, &z = work.z, &p = work.p, &ap = work.ap;
-  auto precondition = [&](const std::vector<double> &r, std::vector<double> &z) {
+  work.p.assign(n, 0.0);
+  work.w.resize(n);
+  work.s.assign(n, 0.0);
+  // r: residual, z: preconditioned residual, w = A z, p: search direction, s = A p
+  double *r = work.r.data(), *z = work.z.data(), *p = work.p.data(), *w = work.w.data(),
+         *s = work.s.data();
+  auto precondition = [&]() {
     if (!block_inverse) {
       for (int k = 0; k < n; k++) z[k] = inv_diag[k] * r[k];
-      return;
+    } else {
+      for (int a = 0; a < n / 3; a++) {
+        const double *m = block_inverse + 9 * a;
+        const double *ra = r + 3 * a;
+        for (int k = 0; k < 3; k++)
+          z[3 * a + k] = (inv_diag[3 * a + k] != 0.0) ? m[3 * k] * ra[0] + m[3 * k + 1] * ra[1] + m[3 * k + 2] * ra[2] : 0.0;
+      }
     }
-    for (int a = 0; a < n / 3; a++) {
-      const double *m = block_inverse + 9 * a;
-      const double *ra = &r[3 * a];
-      for (int k = 0; k < 3; k++)
-        z[3 * a + k] = (inv_diag[3 * a + k] != 0.0) ? m[3 * k] * ra[0] + m[3 * k + 1] * ra[1] + m[3 * k + 2] * ra[2] : 0.0;
-    }
+    project(z);
   };
+  // w = A z, zero on held unknowns (so that r, updated by s, stays zero there)
+  auto apply_to_z = [&]() {
+    apply(z, w);
+    for (int k = 0; k < n; k++)
+      if (inv_diag[k] == 0.0) w[k] = 0.0;
+  };
+  // the one reduction of an iteration: rz = (r,z), wz = (w,z), rr = (r,r), and for the next
+  // residual's norm rw = (r,w), rs = (r,s), ww = (w,w), ws = (w,s), ss = (s,s), with s the
+  // previous A p
+  enum { RZ, WZ, RR, RW, RS, WW, WS, SS, BB, NSUMS };
+  double sums[NSUMS];
+  auto reduce = [&](bool with_b) {
+    for (double &v : sums) v = 0.0;
+    for (int k = 0; k < n; k++) {
+      sums[RZ] += r[k] * z[k];
+      sums[WZ] += w[k] * z[k];
+      sums[RR] += r[k] * r[k];
+      sums[RW] += r[k] * w[k];
+      sums[RS] += r[k] * s[k];
+      sums[WW] += w[k] * w[k];
+      sums[WS] += w[k] * s[k];
+      sums[SS] += s[k] * s[k];
+    }
+    if (with_b)
+      for (int k = 0; k < n; k++) sums[BB] += b[k] * b[k];
+    global_sum(sums, with_b ? NSUMS : BB);
+  };
+
   SolverResult result;
-  double bb = 0.0;
-  for (int k = 0; k < n; k++) bb += b[k] * b[k];
-  global_sum(&bb, 1);
+  project(x);
+  apply(x, w);
+  for (int k = 0; k < n; k++) r[k] = (inv_diag[k] != 0.0) ? b[k] - w[k] : 0.0;
+  precondition();
+  apply_to_z();
+  reduce(true);
+  const double bb = sums[BB];
   if (bb == 0.0) {
     for (int k = 0; k < n; k++) x[k] = 0.0;
     result.converged = true;
     return result;
   }
-  project(x);
-  apply(x, ap.data());
-  double rz = 0.0, rr = 0.0;
-  for (int k = 0; k < n; k++) r[k] = (inv_diag[k] != 0.0) ? b[k] - ap[k] : 0.0;
-  precondition(r, z);
-  project(z.data());
-  for (int k = 0; k < n; k++) {
-    p[k] = z[k];
-    rz += r[k] * z[k];
-    rr += r[k] * r[k];
-  }
-  double sums[2] = {rz, rr};
-  global_sum(sums, 2);
-  rz = sums[0];
-  rr = sums[1];
   const double target = tolerance * tolerance * bb;
+  double rr = sums[RR], rz_old = 1.0, alpha = 1.0;
   while (rr > target && result.iterations < max_iterations) {
-    apply(p.data(), ap.data());
-    double pap = 0.0;
-    for (int k = 0; k < n; k++) pap += p[k] * ap[k];
-    global_sum(&pap, 1);
-    if (!(pap > 0.0)) break;    // breakdown: A not positive on p (cannot happen for SPD A)
-    const double alpha = rz / pap;
-    double rz_new = 0.0;
-    rr = 0.0;
+    const double rz = sums[RZ];
+    const double beta = result.iterations == 0 ? 0.0 : rz / rz_old;
+    const double curvature = sums[WZ] - beta * rz / alpha;    // (p, A p) of the new direction
+    if (!(curvature > 0.0) || !(rz > 0.0)) break;    // breakdown: A not positive (cannot happen for SPD A)
+    alpha = rz / curvature;
+    rz_old = rz;
     for (int k = 0; k < n; k++) {
+      p[k] = z[k] + beta * p[k];
+      s[k] = w[k] + beta * s[k];
       x[k] += alpha * p[k];
-      if (inv_diag[k] != 0.0) r[k] -= alpha * ap[k];
+      r[k] -= alpha * s[k];
     }
-    precondition(r, z);
-    project(z.data());
-    for (int k = 0; k < n; k++) {
-      rz_new += r[k] * z[k];
-      rr += r[k] * r[k];
-    }
-    sums[0] = rz_new;
-    sums[1] = rr;
-    global_sum(sums, 2);
-    rz_new = sums[0];
-    rr = sums[1];
-    const double beta = rz_new / rz;
-    rz = rz_new;
-    for (int k = 0; k < n; k++) p[k] = z[k] + beta * p[k];
     result.iterations++;
+    // |r - alpha s|^2 with s = w + beta s_old, from this iteration's sums
+    const double rs = sums[RW] + beta * sums[RS];
+    const double ss = sums[WW] + 2.0 * beta * sums[WS] + beta * beta * sums[SS];
+    const double predicted = rr - 2.0 * alpha * rs + alpha * alpha * ss;
+    if (predicted <= target) {
+      double actual = 0.0;
+      for (int k = 0; k < n; k++) actual += r[k] * r[k];
+      global_sum(&actual, 1);
+      rr = actual;
+      if (rr <= target || result.iterations >= max_iterations) break;
+    }
+    precondition();
+    apply_to_z();
+    reduce(false);
+    rr = sums[RR];
   }
   result.relative_residual = std::sqrt(rr / bb);
   result.converged = rr <= target;
