@@ -282,18 +282,21 @@ void FixETDImplicit::build_pairs()
       if (c->gamma == 0.0) continue;
       if (rsq >= c->rcsq_d || rsq == 0.0) continue;
       const double r = std::sqrt(rsq);
+      const double inv_r = 1.0 / r;
       const double q = 1.0 - r * c->inv_rc_d;
       const double w_r = etd::power_of(q, c->random_kind, 0.5 * c->s);
       etd::FrictionPair p;
       p.i = i;
       p.j = j;
-      for (int k = 0; k < 3; k++) p.e[k] = d[k] / r;
-      p.friction = factor * c->gamma * w_r * w_r;
+      for (int k = 0; k < 3; k++) p.e[k] = static_cast<float>(d[k] * inv_r);
+      p.friction = static_cast<float>(factor * c->gamma * w_r * w_r);
       pairs.push_back(p);
-      pair_noise.push_back(std::sqrt(factor) * c->sigma * w_r * noise.gaussian(tag[i], tag[j], step));
+      const double amplitude = (factor == 1.0 ? 1.0 : std::sqrt(factor)) * c->sigma * w_r;
+      pair_noise.push_back(amplitude * noise.gaussian(tag[i], tag[j], step));
       if (!i_mobile || !j_mobile) fixed_partner = 1;
     }
   }
+  etd::find_runs(pairs, pair_runs);
   int any = 0;
   MPI_Allreduce(&fixed_partner, &any, 1, MPI_INT, MPI_MAX, world);
   any_fixed_partner = any;
@@ -359,7 +362,10 @@ void FixETDImplicit::accumulate_friction(const double *u, std::vector<double> &g
   const bool newton = force->newton_pair;
   gu.assign(dofs * (nlocal + atom->nghost), 0.0);
   auto keep_j = [=](int j) { return newton || j < nlocal; };
-  etd::accumulate_friction(pairs, u, gu.data(), keep_j, dofs);
+  if (dofs == 3)
+    etd::accumulate_friction_by_runs<3>(pairs, pair_runs, u, gu.data(), keep_j);
+  else
+    etd::accumulate_friction_by_runs<6>(pairs, pair_runs, u, gu.data(), keep_j);
   if (dofs == 6) etd::accumulate_fpm_friction(fpm_pairs, u, gu.data(), keep_j);
 }
 
@@ -396,7 +402,8 @@ void FixETDImplicit::accumulate_blocks(int block_values)
 // uniform translation (null space of G) is projected out of rhs and of the solution.
 bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double> &solution,
                            double mass_weight, double friction_weight, bool deflate, bool singular_ok,
-                           const std::vector<double> *start, bool blocks_summed)
+                           const std::vector<double> *start, bool blocks_summed,
+                           const std::vector<double> *start_friction)
 {
   const int nlocal = atom->nlocal;
   const int n = dofs * nlocal;
@@ -434,10 +441,13 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
   };
   // per-component mean over the solved unknowns (not those held at zero), removed where the
   // translation is singular; held unknowns must stay untouched for CG to stay consistent
-  double active_local[3] = {0.0, 0.0, 0.0}, active_count[3];
-  for (int k = 0; k < n; k++)
-    if (inv_diag[k] != 0.0) active_local[k % 3] += 1.0;
-  MPI_Allreduce(active_local, active_count, 3, MPI_DOUBLE, MPI_SUM, world);
+  double active_count[3] = {0.0, 0.0, 0.0};
+  if (deflate) {    // (a reduction only where it is needed)
+    double active_local[3] = {0.0, 0.0, 0.0};
+    for (int k = 0; k < n; k++)
+      if (inv_diag[k] != 0.0) active_local[k % 3] += 1.0;
+    MPI_Allreduce(active_local, active_count, 3, MPI_DOUBLE, MPI_SUM, world);
+  }
   const double group_count = active_count[0] + active_count[1] + active_count[2];
   auto remove_mean = [&](double *vec) {
     double local[3] = {0.0, 0.0, 0.0}, sum[3];
@@ -461,6 +471,18 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
   };
 
   solution.assign(n, 0.0);
+  std::vector<double> &start_product = work.start_product;
+  bool have_start_product = false;
+  if (start && start_friction) {
+    // A x0 from G x0, which the caller already has: one application of G saved
+    start_product.resize(n);
+    for (int i = 0; i < nlocal; i++) {
+      const bool mobile = mask[i] & groupbit;
+      for (int k = dofs * i; k < dofs * (i + 1); k++)
+        start_product[k] = mobile ? mass_weight * masses[k] * (*start)[k] + friction_weight * (*start_friction)[k] : 0.0;
+    }
+    have_start_product = true;
+  }
   if (start) {
     // from the given start (the old velocities): the collective motion that the block-Jacobi
     // start damps is kept, and the error left is in local relative motion, which the
@@ -479,7 +501,7 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
       n, apply, global_sum, inv_diag.data(), rhs.data(), solution.data(), tolerance, max_iterations,
       block_inverse.data(), [&](double *vec) {
         if (deflate) remove_mean(vec);
-      }, &work.cg);
+      }, &work.cg, have_start_product ? start_product.data() : nullptr);
   if (deflate) remove_mean(solution.data());
 
   last_iterations = result.iterations;
@@ -542,40 +564,46 @@ void FixETDImplicit::friction_noise_step()
   std::vector<double> &solution = work.solution;
   // u holds the group's old velocities (the rows solve() keeps; the doubled velocities of atoms
   // outside the group are in rows it holds at zero)
-  solve(rhs, solution, 1.0, 0.5 * h, false, false, warm_start ? &u : nullptr, true);
+  // Starting from the old velocities, G of the start is G u where no pair couples the group to
+  // an atom outside it (u is 2 v only outside the group)
+  solve(rhs, solution, 1.0, 0.5 * h, false, false, warm_start ? &u : nullptr, true,
+        (warm_start && !any_fixed_partner) ? &gu : nullptr);
 
   // The exact solution conserves the group's momentum when no pair couples it to atoms outside
   // it (the rows of G sum to zero, so sum M v' = sum rhs); an iterate leaves an error of the
   // order of the tolerance, which would random-walk over a long run. Remove it exactly.
-  double sums[4] = {0.0, 0.0, 0.0, 0.0};
-  if (!any_fixed_partner) {
-    double local[4] = {0.0, 0.0, 0.0, 0.0};
-    for (int i = 0; i < nlocal; i++)
-      if (mask[i] & groupbit) {
-        for (int k = 0; k < 3; k++) local[k] += rhs[dofs * i + k] - inertia[dofs * i] * solution[dofs * i + k];
-        local[3] += inertia[dofs * i];
+  // One reduction for both this and the kinetic energy of the shifted velocities below:
+  // sum m (v + c)^2 = sum m v^2 + 2 c . sum m v + c^2 sum m.
+  enum { DEFICIT = 0, MASS = 3, MOMENTUM = 4, TWICE_KINETIC = 7, COMPONENTS = 8, NSUMS = 9 };
+  double local[NSUMS] = {}, sums[NSUMS];
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) {
+      const double m = inertia[dofs * i];
+      const double *s = &solution[dofs * i];
+      for (int k = 0; k < 3; k++) {
+        local[DEFICIT + k] += rhs[dofs * i + k] - m * s[k];
+        local[MOMENTUM + k] += m * s[k];
       }
-    MPI_Allreduce(local, sums, 4, MPI_DOUBLE, MPI_SUM, world);
-  }
-  const double shift[3] = {sums[3] > 0.0 ? sums[0] / sums[3] : 0.0, sums[3] > 0.0 ? sums[1] / sums[3] : 0.0,
-                           sums[3] > 0.0 ? sums[2] / sums[3] : 0.0};
+      local[MASS] += m;
+      local[TWICE_KINETIC] += m * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+      local[COMPONENTS] += 3.0;
+    }
+  MPI_Allreduce(local, sums, NSUMS, MPI_DOUBLE, MPI_SUM, world);
+  double shift[3] = {0.0, 0.0, 0.0};
+  if (!any_fixed_partner && sums[MASS] > 0.0)
+    for (int k = 0; k < 3; k++) shift[k] = sums[DEFICIT + k] / sums[MASS];
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
       for (int k = 0; k < dofs; k++) *dof_pointer(i, k) = solution[dofs * i + k] + (k < 3 ? shift[k] : 0.0);
 
   // The end-of-step velocities that thermo sees carry the splitting's deficit
   // dt^2 <F^2> / (4 m kBT); these, fresh out of the friction step, do not (output 5).
-  double kinetic[2] = {0.0, 0.0}, kinetic_sum[2];
-  for (int i = 0; i < nlocal; i++)
-    if (mask[i] & groupbit) {
-      const double *v = atom->v[i];
-      kinetic[0] += inertia[dofs * i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-      kinetic[1] += 3.0;
-    }
-  MPI_Allreduce(kinetic, kinetic_sum, 2, MPI_DOUBLE, MPI_SUM, world);
+  double twice_kinetic = sums[TWICE_KINETIC];
+  for (int k = 0; k < 3; k++)
+    twice_kinetic += 2.0 * shift[k] * sums[MOMENTUM + k] + shift[k] * shift[k] * sums[MASS];
   // degrees of freedom as compute temp counts them (the centre-of-mass motion removed)
-  const double dof = kinetic_sum[1] - 3.0;
-  friction_step_temperature = dof > 0.0 ? kinetic_sum[0] / (force->boltz * dof) * force->mvv2e : 0.0;
+  const double dof = sums[COMPONENTS] - 3.0;
+  friction_step_temperature = dof > 0.0 ? twice_kinetic / (force->boltz * dof) * force->mvv2e : 0.0;
 
   if (split_requested) {
     // the Crank-Nicolson mean velocity (v + v')/2; u holds v in the group and 2 v outside it

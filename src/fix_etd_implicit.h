@@ -64,6 +64,7 @@ class FixETDImplicit : public Fix {
   int dofs;    // unknowns per atom: 3 (v), or 6 (v and Omega) when dpd/fpm pairs take part
   etd::PairNoise noise;
   std::vector<etd::FrictionPair> pairs;    // this step's geometry
+  std::vector<etd::PairRun> pair_runs;     // its stretches of pairs with the same atom i
   std::vector<double> pair_noise;          // and each pair's sigma w_R theta
   std::vector<etd::FpmFrictionPair> fpm_pairs;    // dpd/fpm pairs of this step
   std::vector<double> fpm_noise;                  // and their random forces (3 per pair)
@@ -88,7 +89,7 @@ class FixETDImplicit : public Fix {
 
   // work vectors reused from step to step (per-step allocation costs page faults at scale)
   struct Work {
-    std::vector<double> masses, rhs, inv_diag, block_inverse, gu;    // solve()
+    std::vector<double> masses, rhs, inv_diag, block_inverse, gu, start_product;    // solve()
     std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia, predicted;    // the steps
     std::vector<double> mean, gmean;    // record_split()
     etd::CgWorkspace cg;
@@ -123,7 +124,8 @@ class FixETDImplicit : public Fix {
   bool overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity, bool singular_ok);
   bool solve(const std::vector<double> &rhs, std::vector<double> &solution, double mass_weight,
              double friction_weight, bool deflate, bool singular_ok = false,
-             const std::vector<double> *start = nullptr, bool blocks_summed = false);
+             const std::vector<double> *start = nullptr, bool blocks_summed = false,
+             const std::vector<double> *start_friction = nullptr);
 };
 
 }    // namespace LAMMPS_NS

@@ -53,6 +53,58 @@ inline void accumulate_friction(const std::vector<FrictionPair> &pairs, const do
   }
 }
 
+// The pairs that share atom i come one after another (the neighbor list's order); a run is
+// such a stretch, pairs [begin, end). Applying G run by run keeps u_i and the sum for atom i
+// in registers instead of loading and storing them once per pair.
+struct PairRun {
+  int i, begin, end;
+};
+
+// runs of consecutive pairs with the same i
+inline void find_runs(const std::vector<FrictionPair> &pairs, std::vector<PairRun> &runs)
+{
+  runs.clear();
+  for (int n = 0; n < static_cast<int>(pairs.size()); n++) {
+    if (runs.empty() || runs.back().i != pairs[n].i) runs.push_back({pairs[n].i, n, n});
+    runs.back().end = n + 1;
+  }
+}
+
+// The same sum as accumulate_friction(), run by run (Stride = 3 or 6 values per atom, the
+// first 3 of which G acts on)
+template <int Stride, typename UpdateJ>
+inline void accumulate_friction_by_runs(const std::vector<FrictionPair> &pairs,
+                                        const std::vector<PairRun> &runs, const double *u,
+                                        double *out, UpdateJ update_j)
+{
+  const FrictionPair *pair = pairs.data();
+  for (const PairRun &run : runs) {
+    const double *ui = u + Stride * run.i;
+    const double ui0 = ui[0], ui1 = ui[1], ui2 = ui[2];
+    double sum0 = 0.0, sum1 = 0.0, sum2 = 0.0;
+    for (int n = run.begin; n < run.end; n++) {
+      const FrictionPair &p = pair[n];
+      const double *uj = u + Stride * p.j;
+      const double e0 = p.e[0], e1 = p.e[1], e2 = p.e[2];
+      const double projected = p.friction * (e0 * (ui0 - uj[0]) + e1 * (ui1 - uj[1]) + e2 * (ui2 - uj[2]));
+      const double f0 = projected * e0, f1 = projected * e1, f2 = projected * e2;
+      sum0 += f0;
+      sum1 += f1;
+      sum2 += f2;
+      if (update_j(p.j)) {
+        double *oj = out + Stride * p.j;
+        oj[0] -= f0;
+        oj[1] -= f1;
+        oj[2] -= f2;
+      }
+    }
+    double *oi = out + Stride * run.i;
+    oi[0] += sum0;
+    oi[1] += sum1;
+    oi[2] += sum2;
+  }
+}
+
 // out_i += scale * sum_j noise_ij e_ij (and the opposite on j), noise_ij = sigma w_R theta: the
 // random impulse, which sums to zero over all atoms.
 template <typename UpdateJ>
@@ -252,7 +304,8 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
                                        double tolerance, int max_iterations,
                                        const double *block_inverse = nullptr,
                                        Project project = Project(),
-                                       CgWorkspace *workspace = nullptr)
+                                       CgWorkspace *workspace = nullptr,
+                                       const double *start_product = nullptr)
 {
   CgWorkspace local;
   CgWorkspace &work = workspace ? *workspace : local;
@@ -306,9 +359,14 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
   };
 
   SolverResult result;
-  project(x);
-  apply(x, w);
-  for (int k = 0; k < n; k++) r[k] = (inv_diag[k] != 0.0) ? b[k] - w[k] : 0.0;
+  // start_product (optional): A x of the start, where the caller has it (then x must already
+  // lie in the projected space)
+  if (!start_product) {
+    project(x);
+    apply(x, w);
+  }
+  const double *ax = start_product ? start_product : w;
+  for (int k = 0; k < n; k++) r[k] = (inv_diag[k] != 0.0) ? b[k] - ax[k] : 0.0;
   precondition();
   apply_to_z();
   reduce(true);

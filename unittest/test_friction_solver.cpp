@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -104,6 +105,50 @@ TEST(FrictionOperator, SymmetricPositiveSemidefiniteWithTranslationNullSpace)
   EXPECT_NEAR(wgu, ugw, 1e-10 * std::fabs(wgu));
   EXPECT_GT(ugu, 0.0);
   for (double g : gt) EXPECT_EQ(g, 0.0);    // a uniform translation costs no friction
+}
+
+// The run-by-run kernel the fix uses gives the pair-by-pair sum, for 3 and 6 values per atom
+// (only the first 3 touched), with and without the j shares (ghosts of another rank)
+TEST(FrictionOperator, RunByRunKernelIsThePairByPairSum)
+{
+  Cluster c;
+  std::vector<etd::PairRun> runs;
+  etd::find_runs(c.pairs, runs);
+  ASSERT_GT(runs.size(), 10u);
+  ASSERT_LT(runs.size(), c.pairs.size());    // some runs hold several pairs
+  int covered = 0;
+  for (const etd::PairRun &run : runs) {
+    for (int k = run.begin; k < run.end; k++) ASSERT_EQ(c.pairs[k].i, run.i);
+    covered += run.end - run.begin;
+  }
+  EXPECT_EQ(covered, static_cast<int>(c.pairs.size()));
+  std::mt19937_64 gen(11);
+  std::normal_distribution<double> normal;
+  const auto even_j_only = [](int j) { return j % 2 == 0; };
+  for (int stride : {3, 6}) {
+    const int n = stride * c.natoms;
+    std::vector<double> u(n);
+    for (double &value : u) value = normal(gen);
+    for (int variant = 0; variant < 2; variant++) {
+      std::vector<double> by_pairs(n, 0.0), by_runs(n, 0.0);
+      if (variant == 0) {
+        etd::accumulate_friction(c.pairs, u.data(), by_pairs.data(), all_local, stride);
+        if (stride == 3) etd::accumulate_friction_by_runs<3>(c.pairs, runs, u.data(), by_runs.data(), all_local);
+        else etd::accumulate_friction_by_runs<6>(c.pairs, runs, u.data(), by_runs.data(), all_local);
+      } else {
+        etd::accumulate_friction(c.pairs, u.data(), by_pairs.data(), even_j_only, stride);
+        if (stride == 3) etd::accumulate_friction_by_runs<3>(c.pairs, runs, u.data(), by_runs.data(), even_j_only);
+        else etd::accumulate_friction_by_runs<6>(c.pairs, runs, u.data(), by_runs.data(), even_j_only);
+      }
+      double largest = 0.0;
+      for (double value : by_pairs) largest = std::max(largest, std::fabs(value));
+      ASSERT_GT(largest, 1.0);
+      for (int k = 0; k < n; k++) {
+        EXPECT_NEAR(by_runs[k], by_pairs[k], 1e-12 * largest) << "stride " << stride << " value " << k;
+        if (stride == 6 && k % 6 >= 3) EXPECT_EQ(by_runs[k], 0.0);
+      }
+    }
+  }
 }
 
 // The Pade step keeps <m v^2> = kBT per component however large h is against m/gamma: from a
