@@ -215,6 +215,67 @@ TEST(FrictionOperator, ConjugateGradientSolvesToTolerance)
   EXPECT_LE(result.relative_residual, 1e-12);
 }
 
+// The single-reduction solver: one global sum per iteration (plus the start's and at most one
+// confirmation), the iterations of textbook preconditioned CG (written out here), and a start
+// product supplied by the caller gives the same solution as the solver's own A x0.
+TEST(FrictionOperator, ConjugateGradientNeedsOneReductionPerIteration)
+{
+  Cluster c;
+  const int n = 3 * c.natoms;
+  const double m = 0.001, h = 0.01;
+  std::vector<double> diag(n, 0.0), inv_diag(n), b(n);
+  etd::accumulate_diagonal(c.pairs, diag.data(), all_local);
+  for (int k = 0; k < n; k++) { inv_diag[k] = 1.0 / (m + 0.5 * h * diag[k]); b[k] = std::cos(0.7 * k); }
+  auto apply = [&](const double *u, double *au) {
+    std::vector<double> gu(n, 0.0);
+    etd::accumulate_friction(c.pairs, u, gu.data(), all_local);
+    for (int k = 0; k < n; k++) au[k] = m * u[k] + 0.5 * h * gu[k];
+  };
+  int reductions = 0;
+  auto counting_sum = [&](double *, int) { reductions++; };
+  for (double tolerance : {1e-4, 1e-8}) {
+    std::vector<double> x(n, 0.0);
+    reductions = 0;
+    const auto result = etd::conjugate_gradient(n, apply, counting_sum, inv_diag.data(), b.data(), x.data(), tolerance, 1000);
+    ASSERT_TRUE(result.converged);
+    EXPECT_LE(reductions, result.iterations + 2) << "tol " << tolerance;
+    // textbook Jacobi-preconditioned CG from zero
+    std::vector<double> y(n, 0.0), r = b, z(n), p(n), ap(n);
+    double rz = 0.0, bb = 0.0;
+    for (int k = 0; k < n; k++) { z[k] = inv_diag[k] * r[k]; p[k] = z[k]; rz += r[k] * z[k]; bb += b[k] * b[k]; }
+    int textbook = 0;
+    for (double rr = bb; rr > tolerance * tolerance * bb; textbook++) {
+      apply(p.data(), ap.data());
+      double pap = 0.0;
+      for (int k = 0; k < n; k++) pap += p[k] * ap[k];
+      const double alpha = rz / pap;
+      double rz_new = 0.0;
+      rr = 0.0;
+      for (int k = 0; k < n; k++) {
+        y[k] += alpha * p[k];
+        r[k] -= alpha * ap[k];
+        z[k] = inv_diag[k] * r[k];
+        rz_new += r[k] * z[k];
+        rr += r[k] * r[k];
+      }
+      for (int k = 0; k < n; k++) p[k] = z[k] + rz_new / rz * p[k];
+      rz = rz_new;
+    }
+    EXPECT_NEAR(result.iterations, textbook, 1) << "tol " << tolerance;
+    // the same start with its product supplied
+    std::vector<double> start(n), product(n), x2(n);
+    for (int k = 0; k < n; k++) start[k] = 0.1 * std::sin(k);
+    apply(start.data(), product.data());
+    std::vector<double> x1 = start;
+    x2 = start;
+    const auto own = etd::conjugate_gradient(n, apply, serial_sum, inv_diag.data(), b.data(), x1.data(), tolerance, 1000);
+    const auto given = etd::conjugate_gradient(n, apply, serial_sum, inv_diag.data(), b.data(), x2.data(), tolerance, 1000,
+                                               nullptr, etd::NoProjection(), nullptr, product.data());
+    EXPECT_EQ(own.iterations, given.iterations);
+    for (int k = 0; k < n; k++) EXPECT_NEAR(x1[k], x2[k], 1e-12 * (1.0 + std::fabs(x1[k])));
+  }
+}
+
 // Zero-mass limit: the Pade step with m -> 0 and the overdamped solve G v = B xi / sqrt(h) give
 // the same velocities (translation removed), so the inertial scheme connects to the overdamped one.
 TEST(FrictionOperator, ZeroMassLimitMatchesOverdampedSolve)
