@@ -129,6 +129,38 @@ def analyse(path, args):
     return result
 
 
+def pool(results):
+    """One result from independent runs of the same case (each analysed on its own): every
+    quantity with an error becomes the inverse-variance weighted mean of the runs, with the
+    error of that mean; F_C and F_D_diss, which have none here, the plain mean."""
+    pooled = dict(results[0])
+    pooled['file'] = '+'.join(r['file'] for r in results)
+    pooled['rows'] = sum(r['rows'] for r in results)
+    for key in [k for k in results[0] if k + '_err' in results[0]]:
+        values = np.array([r[key] for r in results])
+        errors = np.array([r[key + '_err'] for r in results])
+        if np.all(errors > 0):
+            weights = 1.0 / errors**2
+            pooled[key] = float(np.sum(weights * values) / np.sum(weights))
+            pooled[key + '_err'] = float(1.0 / math.sqrt(np.sum(weights)))
+        else:    # a set value (--U): the same in every run
+            pooled[key] = float(values.mean())
+            pooled[key + '_err'] = 0.0
+    for key in ('F_C', 'F_D_diss', 'kT'):
+        if key in results[0]:
+            pooled[key] = float(np.mean([r[key] for r in results]))
+    pooled['C_D_correlation'] = float(correlation_cd(pooled['Re']))
+    pooled['C_D_stokes'] = float(stokes_cd(pooled['Re']))
+    return pooled
+
+
+def analyse_pooled(spec, args):
+    """A drag file, or several joined by '+' (independent runs of one case, pooled)."""
+    paths = [p for p in spec.split('+') if p]
+    results = [analyse(p, args) for p in paths]
+    return results[0] if len(results) == 1 else pool(results)
+
+
 def drag_command(args):
     series = []
     for spec in args.series or []:
@@ -145,7 +177,7 @@ def drag_command(args):
           f'{"C_D":>14} {"corr.":>6} {"C_D/corr":>8} {"24/Re":>6} {"a_eff":>12}')
     for label, files in series:
         for path in files:
-            r = analyse(path, args)
+            r = analyse_pooled(path, args)
             r['series'] = label
             results.append(r)
             print(f'{label:>10} {path[-28:]:>28} {r["U"]:7.4f}+-{r["U_err"]:.4f} '
@@ -286,8 +318,9 @@ def main(argv=None):
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest='command', required=True)
     drag = sub.add_parser('drag', help='Re and C_D from drag files')
-    drag.add_argument('files', nargs='*')
-    drag.add_argument('--series', action='append', help='label:file1,file2,...')
+    drag.add_argument('files', nargs='*',
+                      help='drag files; FILE1+FILE2 pools independent runs of one case')
+    drag.add_argument('--series', action='append', help='label:file1,file2,... (file1a+file1b pools runs)')
     drag.add_argument('--rho', type=float, default=4.0, help='mass density of the fluid')
     drag.add_argument('--d', type=float, default=3.0, help='sphere diameter')
     drag.add_argument('--eta', type=float, default=1.083, help='dynamic viscosity')
