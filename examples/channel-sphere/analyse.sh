@@ -49,6 +49,23 @@ $PY $T radius wall_radius.compliant_H1_rmax3_rigidno_rest wall_radius.compliant_
 $PY $T radius wall_radius.compliant_H1_rmax3_rigidno_rest_diag_outer wall_radius.compliant_H8_rmax3_rigidno_rest_diag_outer \
     wall_radius.compliant_H8_rmax1.02_rigidno_rest_diag_outer wall_radius.compliant_H8_rmax3_rigidyes --png $F/channel_sphere_radius_outer.png
 $PY $T radius --each --discard 0 wall_radius.compliant_H8_rmax3_rigidno_rest_diag --png $F/channel_sphere_radius_H8_diag_ends.png
+echo "== compliant channel, longer runs (seed 3001, 24,000 steps) and pooled with the first runs (section 4.3)"
+$PY $T drag --velocity v_vcore drag.long_rigid drag.long_H8_rmax3_outer drag.long_H1_rmax3_outer drag.long_H8_rmax1.02_outer \
+    drag.long_rigid+drag.compliant_H8_rmax3_rigidyes \
+    drag.long_H8_rmax3_outer+drag.compliant_H8_rmax3_rigidno_rest_diag_outer \
+    drag.long_H1_rmax3_outer+drag.compliant_H1_rmax3_rigidno_rest_diag_outer \
+    drag.long_H8_rmax1.02_outer+drag.compliant_H8_rmax1.02_rigidno_rest_diag_outer
+$PY $T drag --velocity v_vcore --series "frozen shell:drag.long_rigid+drag.compliant_H8_rmax3_rigidyes" \
+    --series "H=8:drag.long_H8_rmax3_outer+drag.compliant_H8_rmax3_rigidno_rest_diag_outer" \
+    --series "H=1:drag.long_H1_rmax3_outer+drag.compliant_H1_rmax3_rigidno_rest_diag_outer" \
+    --series "H=8, r_max=1.02:drag.long_H8_rmax1.02_outer+drag.compliant_H8_rmax1.02_rigidno_rest_diag_outer" \
+    --title "compliant channel, outer layer anchored, 2 runs pooled" --png $F/channel_sphere_cd_compliant_pooled.png
+$PY $T radius wall_radius.long_rigid wall_radius.long_H8_rmax3_outer wall_radius.long_H1_rmax3_outer wall_radius.long_H8_rmax1.02_outer
+echo "== ends-anchored wall without flow: paper's wall particles against wall particles repelling like fluid (section 4.1)"
+$PY $T radius --each --discard 0 wall_radius.noflow_H8_rmax3_diag_ends wall_radius.noflow_alike_H8_rmax3_diag_ends
+for f in drag.noflow_H8_rmax3_diag_ends drag.noflow_alike_H8_rmax3_diag_ends; do
+    echo "$f:"; awk '!/^#/ && $1 % 1000 == 0 {printf "  %d %.3f %.0f\n", $1, $13, $12}' $f
+done
 echo "== core velocity and core fluid count against time (steps, v_vcore, v_ncore), every 1000 steps"
 for f in drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno drag.compliant_H8_rmax3_rigidno_r2 \
          drag.compliant_H1_rmax3_rigidno_rest drag.compliant_H8_rmax3_rigidno_rest drag.compliant_H8_rmax3_rigidno_rest_diag \
