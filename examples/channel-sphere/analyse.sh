@@ -66,6 +66,11 @@ $PY $T radius --each --discard 0 wall_radius.noflow_H8_rmax3_diag_ends wall_radi
 for f in drag.noflow_H8_rmax3_diag_ends drag.noflow_alike_H8_rmax3_diag_ends; do
     echo "$f:"; awk '!/^#/ && $1 % 1000 == 0 {printf "  %d %.3f %.0f\n", $1, $13, $12}' $f
 done
+echo "== ends-anchored wall with flow, wall particles repelling like fluid (section 4.1)"
+$PY $T radius --each --discard 0 wall_radius.alike_H8_rmax3_diag_ends wall_radius.alike_H1_rmax3_diag_ends
+for f in drag.alike_rigid drag.alike_H8_rmax3_diag_ends drag.alike_H1_rmax3_diag_ends; do
+    echo "$f:"; awk '!/^#/ && $1 % 1000 == 0 {printf "  %d %.3f %.0f\n", $1, $13, $12}' $f
+done
 echo "== core velocity and core fluid count against time (steps, v_vcore, v_ncore), every 1000 steps"
 for f in drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno drag.compliant_H8_rmax3_rigidno_r2 \
          drag.compliant_H1_rmax3_rigidno_rest drag.compliant_H8_rmax3_rigidno_rest drag.compliant_H8_rmax3_rigidno_rest_diag \
