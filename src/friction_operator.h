@@ -274,7 +274,7 @@ inline bool invert_block(const double *block, double shift, double scale, double
 // reduction, so convergence is seen before the next application of A, not after it; a
 // predicted convergence is confirmed with the true norm of the recursively updated residual.
 //   apply(p, Ap): Ap = A p (the caller communicates ghosts as needed)
-//   global_sum(values, count): sums the count values (at most 8) over all ranks, in place
+//   global_sum(values, count): sums the count values (at most 9) over all ranks, in place
 // x holds the starting guess on entry. Unknowns with inv_diag = 0 are held at their start
 // value (frozen components, atoms without friction in the zero-mass limit).
 struct NoProjection {

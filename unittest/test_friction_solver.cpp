@@ -263,11 +263,10 @@ TEST(FrictionOperator, ConjugateGradientNeedsOneReductionPerIteration)
     }
     EXPECT_NEAR(result.iterations, textbook, 1) << "tol " << tolerance;
     // the same start with its product supplied
-    std::vector<double> start(n), product(n), x2(n);
+    std::vector<double> start(n), product(n);
     for (int k = 0; k < n; k++) start[k] = 0.1 * std::sin(k);
     apply(start.data(), product.data());
-    std::vector<double> x1 = start;
-    x2 = start;
+    std::vector<double> x1 = start, x2 = start;
     const auto own = etd::conjugate_gradient(n, apply, serial_sum, inv_diag.data(), b.data(), x1.data(), tolerance, 1000);
     const auto given = etd::conjugate_gradient(n, apply, serial_sum, inv_diag.data(), b.data(), x2.data(), tolerance, 1000,
                                                nullptr, etd::NoProjection(), nullptr, product.data());
