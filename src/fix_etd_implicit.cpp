@@ -7,10 +7,11 @@
 // noise while this scheme runs). Overdamped (m -> 0):
 //   solve G v = F + B xi / sqrt(h);  x += h v
 // G, B and xi are built at the positions where the solve happens, from the fix's own half
-// neighbor list and the pair styles' coefficients; atoms outside the group keep their
-// velocities (walls, a fixed sphere) and enter G with them. With dpd/fpm pairs the unknowns are
-// (v, Omega) per atom, M holds masses and moments of inertia, and G couples translation and
-// rotation through the pairs' shear friction (friction_operator.h).
+// neighbor list (newton off: see partner_exchange.h) and the pair styles' coefficients; atoms
+// outside the group keep their velocities (walls, a fixed sphere) and enter G with them. With
+// dpd/fpm pairs the unknowns are (v, Omega) per atom, M holds masses and moments of inertia,
+// and G couples translation and rotation through the pairs' shear friction
+// (friction_operator.h).
 #include "fix_etd_implicit.h"
 
 #include "atom.h"
@@ -38,7 +39,9 @@ using namespace FixConst;
 
 FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), overdamped(false), midpoint(true), warm_start(false), tolerance(1e-6), max_iterations(200), dt(0.0),
-    list(nullptr), dofs(3), any_fixed_partner(false), comm_nslots(0), comm_positions(false),
+    list(nullptr), list_newton_off(true), dofs(3), any_fixed_partner(false), partners_built(-1),
+    partner_slots(0),
+    comm_nslots(0), comm_positions(false),
     split_requested(false), split_rows(0), split(nullptr), last_iterations(0), last_residual(0.0),
     iterations_sum(0.0), solves(0), predictor_steps(0)
 {
@@ -48,7 +51,6 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
   extvector = 0;
   global_freq = 1;
   comm_forward = 9;     // positions and 3 values per atom (v), 6 with rotation (v, Omega)
-  comm_reverse = 24;   // 3 or 6 per atom twice, and 6 or 12 for the preconditioner's blocks
 
   int iarg = 3;
   while (iarg < narg) {
@@ -90,6 +92,8 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
   if (overdamped && warm_start)
     error->all(FLERR, "Illegal fix etd command: start velocity needs overdamped no (the zero-mass "
                "solve starts from the block-Jacobi solution)");
+
+  partners.reset(new etd::PartnerExchange(world));
 
   // per-atom split for compute dpd/split, kept with the atoms when they migrate or are sorted
   maxexchange = 6;
@@ -158,7 +162,17 @@ void FixETDImplicit::init()
                  "diameter (set ... diameter) and a mass", bad);
   }
   noise = etd::PairNoise(providers.front()->noise_seed(), etd::NoiseStream::Integrator);
-  etd::compat::request_fix_half_list(neighbor, this, instance_me);
+  // On several ranks the list is newton off, so that a pair crossing ranks is held by both
+  // (partner_exchange.h); on one rank there is no such pair, and the default list is a free
+  // copy of the pair style's where the newton settings agree.
+  if (comm->nprocs > 1) {
+    etd::compat::request_fix_half_list_newton_off(neighbor, this, instance_me);
+    list_newton_off = true;
+  } else {
+    etd::compat::request_fix_half_list(neighbor, this, instance_me);
+    list_newton_off = !force->newton_pair;
+  }
+  partners_built = -1;
 }
 
 void FixETDImplicit::init_list(int, NeighList *ptr) { list = ptr; }
@@ -244,14 +258,75 @@ void FixETDImplicit::final_integrate()
 
 /* ---- the pair geometry of this step ---------------------------------------------------- */
 
+// Which atom of the partner numbering (fix_etd_implicit.h) each ghost the list uses stands for:
+// an image of an owned atom is that atom, an atom of another rank gets a slot. Found once per
+// neighbor list build (ghosts are renumbered only then); collective.
+void FixETDImplicit::find_partners()
+{
+  const int nlocal = atom->nlocal;
+  const int nghost = atom->nghost;
+  // every ghost learns its owner (rank, local index), exact in doubles
+  std::vector<double> &owner = work.ghost_owner;
+  owner.resize(2 * (nlocal + nghost));
+  for (int i = 0; i < nlocal; i++) {
+    owner[2 * i] = comm->me;
+    owner[2 * i + 1] = i;
+  }
+  forward_exchange({{&owner, 2}});
+
+  struct Remote {
+    int rank, index, ghost;
+  };
+  std::vector<Remote> remote;
+  constexpr int unused = -1, remote_mark = -2;
+  ghost_partner.assign(nghost, unused);
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (j < nlocal || ghost_partner[j - nlocal] != unused) continue;
+      const int rank = static_cast<int>(owner[2 * j]);
+      const int index = static_cast<int>(owner[2 * j + 1]);
+      if (rank == comm->me) {
+        ghost_partner[j - nlocal] = index;
+      } else {
+        ghost_partner[j - nlocal] = remote_mark;
+        remote.push_back({rank, index, j});
+      }
+    }
+  }
+  // slots grouped by owner; several images of one remote atom share its slot
+  std::sort(remote.begin(), remote.end(), [](const Remote &a, const Remote &b) {
+    return a.rank != b.rank ? a.rank < b.rank : a.index < b.index;
+  });
+  std::vector<int> slot_rank, slot_index;
+  slot_ghost.clear();
+  for (const Remote &r : remote) {
+    if (slot_rank.empty() || r.rank != slot_rank.back() || r.index != slot_index.back()) {
+      slot_rank.push_back(r.rank);
+      slot_index.push_back(r.index);
+      slot_ghost.push_back(r.ghost);
+    }
+    ghost_partner[r.ghost - nlocal] = nlocal + static_cast<int>(slot_rank.size()) - 1;
+  }
+  partner_slots = static_cast<int>(slot_rank.size());
+  partners->set_requests(slot_rank, slot_index);
+  partners_built = neighbor->ncalls;
+}
+
+int FixETDImplicit::npartners() const { return atom->nlocal + partner_slots; }
+
 void FixETDImplicit::build_pairs()
 {
+  if (partners_built != neighbor->ncalls) find_partners();
   double **x = atom->x;
   const int *type = atom->type;
   const int *mask = atom->mask;
   const tagint *tag = atom->tag;
   const double *special_lj = force->special_lj;
   const int ntypes1 = atom->ntypes + 1;
+  const int nlocal = atom->nlocal;
   const std::int64_t step = update->ntimestep;
 
   pairs.clear();
@@ -268,6 +343,13 @@ void FixETDImplicit::build_pairs()
       const double factor = special_lj[(j >> SBBITS) & 3];
       j &= NEIGHMASK;
       if (factor == 0.0) continue;
+      int partner = j;
+      if (j >= nlocal) {
+        partner = ghost_partner[j - nlocal];
+        // an image of an owned atom: a newton-off list holds the pair from both ends, one is
+        // kept (an atom and its own image have no relative velocity and opposite noise)
+        if (partner < nlocal && list_newton_off && tag[i] >= tag[partner]) continue;
+      }
       const bool j_mobile = mask[j] & groupbit;
       if (!i_mobile && !j_mobile) continue;
       const etd::PairCoefficients *c = pair_table[type[i] * ntypes1 + type[j]];
@@ -275,7 +357,7 @@ void FixETDImplicit::build_pairs()
       const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       if (!c) {
         const etd::FpmCoefficients *fc = fpm_table[type[i] * ntypes1 + type[j]];
-        if (fc && add_fpm_pair(*fc, i, j, d, rsq, factor, tag[i], tag[j], step) && (!i_mobile || !j_mobile))
+        if (fc && add_fpm_pair(*fc, i, partner, d, rsq, factor, tag[i], tag[j], step) && (!i_mobile || !j_mobile))
           fixed_partner = 1;
         continue;
       }
@@ -287,7 +369,7 @@ void FixETDImplicit::build_pairs()
       const double w_r = etd::power_of(q, c->random_kind, 0.5 * c->s);
       etd::FrictionPair p;
       p.i = i;
-      p.j = j;
+      p.j = partner;
       for (int k = 0; k < 3; k++) p.e[k] = static_cast<float>(d[k] * inv_r);
       p.friction = static_cast<float>(factor * c->gamma * w_r * w_r);
       pairs.push_back(p);
@@ -333,14 +415,14 @@ bool FixETDImplicit::add_fpm_pair(const etd::FpmCoefficients &c, int i, int j, c
   return true;
 }
 
-// gu = G u over owned atoms (u given on owned atoms; ghosts are filled here). With group_only,
-// atoms outside the group count as at rest (the solver's unknowns are the group's velocities).
+// gu = G u over owned atoms (u given on owned atoms; the remote partners are filled here). With
+// group_only, atoms outside the group count as at rest (the solver's unknowns are the group's
+// velocities).
 void FixETDImplicit::apply_friction(const double *u, std::vector<double> &gu, bool group_only)
 {
   const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
   const int *mask = atom->mask;
-  operand.resize(dofs * nall);
+  operand.resize(dofs * npartners());
   if (group_only) {
     for (int i = 0; i < nlocal; i++) {
       const double keep = (mask[i] & groupbit) ? 1.0 : 0.0;
@@ -349,19 +431,17 @@ void FixETDImplicit::apply_friction(const double *u, std::vector<double> &gu, bo
   } else {
     std::copy(u, u + dofs * nlocal, operand.begin());
   }
-  forward_exchange({{&operand, dofs}});
+  partners->exchange(operand.data(), nlocal, dofs);
   accumulate_friction(operand.data(), gu);
-  if (force->newton_pair) reverse_sum({{&gu, dofs}});
 }
 
-// gu = G u over owned and ghost atoms from u given on both, before the ghosts' shares are
-// summed onto their owners
+// gu = G u over owned atoms from u given on all partners (a remote partner's share is its
+// owner's to compute)
 void FixETDImplicit::accumulate_friction(const double *u, std::vector<double> &gu) const
 {
   const int nlocal = atom->nlocal;
-  const bool newton = force->newton_pair;
-  gu.assign(dofs * (nlocal + atom->nghost), 0.0);
-  auto keep_j = [=](int j) { return newton || j < nlocal; };
+  gu.assign(dofs * nlocal, 0.0);
+  auto keep_j = [=](int j) { return j < nlocal; };
   if (dofs == 3)
     etd::accumulate_friction_by_runs<3>(pairs, pair_runs, u, gu.data(), keep_j);
   else
@@ -369,28 +449,23 @@ void FixETDImplicit::accumulate_friction(const double *u, std::vector<double> &g
   if (dofs == 6) etd::accumulate_fpm_friction(fpm_pairs, u, gu.data(), keep_j);
 }
 
-// the random impulse sum_pairs B xi, times scale, on owned atoms (with sum_over_ranks false,
-// before the ghosts' shares are summed onto their owners)
-void FixETDImplicit::random_impulse(double scale, std::vector<double> &impulse, bool sum_over_ranks)
+// the random impulse sum_pairs B xi, times scale, on owned atoms (a pair that crosses ranks
+// draws the same theta on both: the noise is keyed on the atom IDs)
+void FixETDImplicit::random_impulse(double scale, std::vector<double> &impulse)
 {
   const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  const bool newton = force->newton_pair;
-  impulse.assign(dofs * nall, 0.0);
-  auto keep_j = [=](int j) { return newton || j < nlocal; };
+  impulse.assign(dofs * nlocal, 0.0);
+  auto keep_j = [=](int j) { return j < nlocal; };
   etd::accumulate_noise(pairs, pair_noise, scale, impulse.data(), keep_j, dofs);
   if (dofs == 6) etd::accumulate_fpm_noise(fpm_pairs, fpm_noise, scale, impulse.data(), keep_j);
-  if (newton && sum_over_ranks) reverse_sum({{&impulse, dofs}});
 }
 
-// each atom's 3x3 block(s) of G (6 values each, v-v and with rotation Omega-Omega), before the
-// ghosts' shares are summed onto their owners
+// each owned atom's 3x3 block(s) of G (6 values each, v-v and with rotation Omega-Omega)
 void FixETDImplicit::accumulate_blocks(int block_values)
 {
   const int nlocal = atom->nlocal;
-  const bool newton = force->newton_pair;
-  diagonal.assign(block_values * (nlocal + atom->nghost), 0.0);
-  auto keep_j = [=](int j) { return newton || j < nlocal; };
+  diagonal.assign(block_values * nlocal, 0.0);
+  auto keep_j = [=](int j) { return j < nlocal; };
   etd::accumulate_blocks(pairs, diagonal.data(), keep_j, block_values);
   if (dofs == 6) etd::accumulate_fpm_blocks(fpm_pairs, diagonal.data(), keep_j);
 }
@@ -402,13 +477,12 @@ void FixETDImplicit::accumulate_blocks(int block_values)
 // uniform translation (null space of G) is projected out of rhs and of the solution.
 bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double> &solution,
                            double mass_weight, double friction_weight, bool deflate, bool singular_ok,
-                           const std::vector<double> *start, bool blocks_summed,
+                           const std::vector<double> *start,
                            const std::vector<double> *start_friction)
 {
   const int nlocal = atom->nlocal;
   const int n = dofs * nlocal;
   const int *mask = atom->mask;
-  const bool newton = force->newton_pair;
 
   std::vector<double> &masses = work.masses, &rhs = work.rhs;
   rhs.assign(rhs_in.begin(), rhs_in.begin() + n);
@@ -416,13 +490,8 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
 
   // block-Jacobi preconditioner: each atom's 3x3 block of mass_weight M + friction_weight G
   // (per atom one 3x3 block, 6 values, or with rotation two: v-v and Omega-Omega)
-  // (blocks_summed: the caller has accumulated and summed them, with its own exchange)
   const int nblocks = n / 3;
-  const int block_values = 2 * dofs;
-  if (!blocks_summed) {
-    accumulate_blocks(block_values);
-    if (newton) reverse_sum({{&diagonal, block_values}});
-  }
+  accumulate_blocks(2 * dofs);
   std::vector<double> &inv_diag = work.inv_diag, &block_inverse = work.block_inverse;
   inv_diag.assign(n, 0.0);
   block_inverse.assign(9 * nblocks, 0.0);
@@ -538,24 +607,26 @@ void FixETDImplicit::friction_noise_step()
   std::vector<double> &inertia = work.inertia;
   dof_inertia(inertia);
   // One forward exchange brings the ghosts to the half-drifted positions and carries their
-  // velocities (u), and one reverse exchange sums G u, the random impulse and the
-  // preconditioner's blocks: every exchange is a point where the ranks wait for each other.
+  // velocities (every exchange is a point where the ranks wait for each other)
   const int nall = nlocal + atom->nghost;
-  u.resize(dofs * nall);
+  std::vector<double> &ghost_u = work.ghost_u;
+  ghost_u.resize(dofs * nall);
   rhs.resize(dofs * nlocal);
   for (int i = 0; i < nlocal; i++)
-    for (int k = 0; k < dofs; k++) u[dofs * i + k] = *dof_pointer(i, k);
-  forward_exchange({{&u, dofs}}, true);
-  for (int i = 0; i < nall; i++) {
-    if (mask[i] & groupbit) continue;
-    for (int k = 0; k < dofs; k++) u[dofs * i + k] *= 2.0;
-  }
+    for (int k = 0; k < dofs; k++) ghost_u[dofs * i + k] = *dof_pointer(i, k);
+  forward_exchange({{&ghost_u, dofs}}, true);
   build_pairs();
+  // u over the partners: owned atoms, then each remote slot from one of its ghost images
+  u.resize(dofs * npartners());
+  std::copy(ghost_u.begin(), ghost_u.begin() + dofs * nlocal, u.begin());
+  for (int s = 0; s < partner_slots; s++)
+    for (int k = 0; k < dofs; k++) u[dofs * (nlocal + s) + k] = ghost_u[dofs * slot_ghost[s] + k];
+  for (int p = 0; p < npartners(); p++) {
+    if (mask[p < nlocal ? p : slot_ghost[p - nlocal]] & groupbit) continue;
+    for (int k = 0; k < dofs; k++) u[dofs * p + k] *= 2.0;
+  }
   accumulate_friction(u.data(), gu);
-  random_impulse(std::sqrt(h), impulse, false);
-  const int block_values = 2 * dofs;
-  accumulate_blocks(block_values);
-  if (force->newton_pair) reverse_sum({{&gu, dofs}, {&impulse, dofs}, {&diagonal, block_values}});
+  random_impulse(std::sqrt(h), impulse);
   for (int i = 0; i < nlocal; i++)
     for (int k = 0; k < dofs; k++) {
       const int d = dofs * i + k;
@@ -566,7 +637,7 @@ void FixETDImplicit::friction_noise_step()
   // outside the group are in rows it holds at zero)
   // Starting from the old velocities, G of the start is G u where no pair couples the group to
   // an atom outside it (u is 2 v only outside the group)
-  solve(rhs, solution, 1.0, 0.5 * h, false, false, warm_start ? &u : nullptr, true,
+  solve(rhs, solution, 1.0, 0.5 * h, false, false, warm_start ? &u : nullptr,
         (warm_start && !any_fixed_partner) ? &gu : nullptr);
 
   // The exact solution conserves the group's momentum when no pair couples it to atoms outside
@@ -742,13 +813,6 @@ void FixETDImplicit::forward_exchange(std::initializer_list<CommSlot> slots, boo
   comm_positions = false;
 }
 
-void FixETDImplicit::reverse_sum(std::initializer_list<CommSlot> slots)
-{
-  comm_nslots = 0;
-  for (const CommSlot &slot : slots) comm_slots[comm_nslots++] = slot;
-  etd::compat::reverse_comm(comm, this);
-}
-
 int FixETDImplicit::pack_forward_comm(int n, int *list_, double *buf, int pbc_flag, int *pbc)
 {
   int m = 0;
@@ -794,29 +858,6 @@ void FixETDImplicit::unpack_forward_comm(int n, int first, double *buf)
   }
 }
 
-int FixETDImplicit::pack_reverse_comm(int n, int first, double *buf)
-{
-  int m = 0;
-  for (int i = first; i < first + n; i++)
-    for (int s = 0; s < comm_nslots; s++) {
-      const int width = comm_slots[s].width;
-      const double *values = comm_slots[s].vector->data() + width * i;
-      for (int k = 0; k < width; k++) buf[m++] = values[k];
-    }
-  return m;
-}
-
-void FixETDImplicit::unpack_reverse_comm(int n, int *list_, double *buf)
-{
-  int m = 0;
-  for (int i = 0; i < n; i++)
-    for (int s = 0; s < comm_nslots; s++) {
-      const int width = comm_slots[s].width;
-      double *values = comm_slots[s].vector->data() + width * list_[i];
-      for (int k = 0; k < width; k++) values[k] += buf[m++];
-    }
-}
-
 void FixETDImplicit::grow_arrays(int nmax)
 {
   memory->grow(split, nmax, 6, "etd:split");
@@ -847,5 +888,6 @@ double FixETDImplicit::memory_usage()
   return sizeof(double) * 6 * split_rows + sizeof(etd::FrictionPair) * pairs.capacity() +
       sizeof(double) * pair_noise.capacity() +
       sizeof(etd::FpmFrictionPair) * fpm_pairs.capacity() + sizeof(double) * fpm_noise.capacity() +
-      sizeof(double) * (operand.capacity() + diagonal.capacity());
+      sizeof(double) * (operand.capacity() + diagonal.capacity()) +
+      sizeof(int) * (ghost_partner.capacity() + slot_ghost.capacity());
 }

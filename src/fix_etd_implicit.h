@@ -7,8 +7,10 @@
 
 #include "dpd_random.h"
 #include "friction_operator.h"
+#include "partner_exchange.h"
 
 #include <initializer_list>
+#include <memory>
 #include <vector>
 
 namespace etd {
@@ -32,8 +34,6 @@ class FixETDImplicit : public Fix {
   double compute_vector(int) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
-  int pack_reverse_comm(int, int, double *) override;
-  void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -58,6 +58,7 @@ class FixETDImplicit : public Fix {
   int max_iterations;
   double dt;
   class NeighList *list;
+  bool list_newton_off;    // each image pair is listed from both ends
   std::vector<etd::DpdExtrasProvider *> providers;
   std::vector<const etd::PairCoefficients *> pair_table;    // (ntypes+1)^2, nullptr: no DPD
   std::vector<const etd::FpmCoefficients *> fpm_table;      // the same for dpd/fpm pairs
@@ -70,11 +71,23 @@ class FixETDImplicit : public Fix {
   std::vector<double> fpm_noise;                  // and their random forces (3 per pair)
   bool any_fixed_partner;                  // some pair couples to an atom outside the group
 
-  // per-atom vectors over owned + ghost atoms, dofs values each
+  // The atoms G acts on, "partners": the owned atoms [0, nlocal), then one slot for each atom
+  // of another rank that a pair uses (partner_exchange.h). Images of owned atoms are the owned
+  // atoms themselves, and a pair that crosses ranks is held by both, each updating its own atom,
+  // so applying G needs one exchange of the slots' values and no reverse sum.
+  std::unique_ptr<etd::PartnerExchange> partners;
+  bigint partners_built;               // neighbor->ncalls of the list they were found from
+  int partner_slots;                   // remote atoms
+  std::vector<int> ghost_partner;      // per ghost (index - nlocal): its partner index, or -1
+  std::vector<int> slot_ghost;         // per slot: one ghost that is an image of it
+  void find_partners();
+  int npartners() const;    // owned atoms and slots
+
+  // per-partner vectors, dofs values each: G's operand; per owned atom, the preconditioner blocks
   std::vector<double> operand, diagonal;
-  // What the next forward/reverse communication moves: per atom, 'width' values of each slot's
+  // What the next forward (ghost) communication moves: per atom, 'width' values of each slot's
   // vector, in one message for all slots (each exchange is a point where the ranks wait for
-  // each other); a forward exchange may also carry the positions (with the periodic shift).
+  // each other); it may also carry the positions (with the periodic shift).
   struct CommSlot {
     std::vector<double> *vector;
     int width;
@@ -84,13 +97,13 @@ class FixETDImplicit : public Fix {
   int comm_nslots;
   bool comm_positions;
   void forward_exchange(std::initializer_list<CommSlot> slots, bool positions = false);
-  void reverse_sum(std::initializer_list<CommSlot> slots);
   void accumulate_blocks(int block_values);
 
   // work vectors reused from step to step (per-step allocation costs page faults at scale)
   struct Work {
     std::vector<double> masses, rhs, inv_diag, block_inverse, gu, start_product;    // solve()
     std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia, predicted;    // the steps
+    std::vector<double> ghost_u, ghost_owner;    // per ghost: velocities, owner (rank, index)
     std::vector<double> mean, gmean;    // record_split()
     etd::CgWorkspace cg;
   } work;
@@ -114,7 +127,7 @@ class FixETDImplicit : public Fix {
   void build_pairs();
   bool add_fpm_pair(const etd::FpmCoefficients &c, int i, int j, const double d[3], double rsq,
                     double factor, tagint tag_i, tagint tag_j, std::int64_t step);
-  void random_impulse(double scale, std::vector<double> &impulse, bool sum_over_ranks = true);
+  void random_impulse(double scale, std::vector<double> &impulse);
   void dof_inertia(std::vector<double> &inertia) const;
   double *dof_pointer(int i, int k) const;
   void apply_friction(const double *u, std::vector<double> &gu, bool group_only);
@@ -124,7 +137,7 @@ class FixETDImplicit : public Fix {
   bool overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity, bool singular_ok);
   bool solve(const std::vector<double> &rhs, std::vector<double> &solution, double mass_weight,
              double friction_weight, bool deflate, bool singular_ok = false,
-             const std::vector<double> *start = nullptr, bool blocks_summed = false,
+             const std::vector<double> *start = nullptr,
              const std::vector<double> *start_friction = nullptr);
 };
 

@@ -50,6 +50,23 @@ inline void request_fix_half_list(LAMMPS_NS::Neighbor *neighbor, LAMMPS_NS::Fix 
 #endif
 }
 
+// A perpetual half neighbor list for a fix, newton off whatever the newton setting: a pair of
+// an owned and a ghost atom is listed on the owned atom's side, by every rank that owns one of
+// the two (and twice on one rank where the ghost is an image of an atom it owns).
+inline void request_fix_half_list_newton_off(LAMMPS_NS::Neighbor *neighbor, LAMMPS_NS::Fix *fix,
+                                             int instance)
+{
+#if ETD_LAMMPS_HAS_ADD_REQUEST
+  (void) instance;
+  neighbor->add_request(fix, LAMMPS_NS::NeighConst::REQ_NEWTON_OFF);
+#else
+  const int irequest = neighbor->request(fix, instance);
+  neighbor->requests[irequest]->pair = 0;
+  neighbor->requests[irequest]->fix = 1;
+  neighbor->requests[irequest]->newton = 2;
+#endif
+}
+
 // Reverse communication of a pair style's per-atom data (pack/unpack_reverse_comm).
 inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
 {
