@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Time to solution at equal accuracy: for each integrator and mass, the largest time step (of
-a list) at which the equilibrium kBT is within 1 % of its target, and the wall-clock seconds
-per unit of simulated time at that step, all in one go on the same machine.
+a list) at which the equilibrium kBT is within 1 % of its target (capped where the viscosity
+limits the step: VISCOSITY_MAX_DT), and the wall-clock seconds per unit of simulated time at
+that step, all in one go on the same machine.
 
 Usage: bench/time_to_solution.py LMP PLUGIN [--time T] [--out FILE] [--ranks N] [--masses M ...]
 The system is validation/in.temperature_scan (4,000 atoms, n = 4, a = 18.75, gamma = 4.5,
@@ -43,6 +44,13 @@ CASES = [
     ("dpd/gen + etd scheme implicit overdamped yes", "gen", "etd scheme implicit overdamped yes", 0.0001,
      [0.003]),
 ]
+
+
+# The viscosity bounds the step where kBT does not: at m = 0.001 the implicit scheme's
+# reverse-Poiseuille viscosity is within 2 % at dt = 0.001 but +5.5 % at 0.0012
+# (doc/validation_implicit.md), so no step above 0.001 is chosen there, whatever its kBT (the
+# scan still runs and reports them)
+VISCOSITY_MAX_DT = {0.001: 0.001}
 
 
 def run(lmp, plugin, pair, integrator, mass, dt, time, workdir, equil=None, ranks=1):
@@ -98,7 +106,8 @@ def main():
                 lines.append(f"| {mass} | {label} | {dt} | {shown} | {shown_friction} | "
                              f"{'' if cost is None else f'{cost:.1f}'} |")
                 print(lines[-1], flush=True)
-                if kT is not None and (abs(kT - 1.0) <= 0.01 or "overdamped" in integrator):
+                within_viscosity = dt <= VISCOSITY_MAX_DT.get(mass, float("inf")) or pair == "stock"
+                if kT is not None and within_viscosity and (abs(kT - 1.0) <= 0.01 or "overdamped" in integrator):
                     best[(mass, label)] = (dt, cost, pair, integrator)
                 if "overdamped" in integrator:
                     continue
@@ -114,8 +123,9 @@ def main():
                                  equil=max(100 * dt, 0.02), ranks=args.ranks)
                 if seconds is not None and seconds < best[key][1]:
                     best[key] = (dt, seconds, pair, integrator)
-    lines += ["", "Largest step within 1 % of kBT = 1 and time to solution against stock (seconds per",
-              "time unit: fastest of the scan run and the timing rounds):", "",
+    lines += ["", "Largest step within 1 % of kBT = 1 (and, at m = 0.001, no larger than the step where the",
+              "viscosity is validated) and time to solution against stock (seconds per time unit: fastest",
+              "of the scan run and the timing rounds):", "",
               "| mass | integrator | largest dt | s per time unit | speed-up over stock |", "|---|---|---|---|---|"]
     for mass in sorted({c[3] for c in cases}, reverse=True):
         stock = best.get((mass, "stock dpd/ext + nve"))

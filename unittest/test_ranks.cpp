@@ -28,6 +28,28 @@ std::vector<std::string> fluid(const std::string &newton, const std::string &dat
           "pair_coeff 2 2 25 4.5 2.0", "pair_coeff 1 2 1750 20.48 0.25 1.0 cut_d 1.5 exp_c 0.5"};
 }
 
+// all velocities, then all positions, by atom ID
+std::vector<double> velocities_and_positions(Lammps &l)
+{
+  auto v = l.gather("v");
+  auto x = l.gather("x");
+  v.insert(v.end(), x.begin(), x.end());
+  return v;
+}
+
+// results[first + 1 ... first + count - 1] agree with results[first] to 'relative' of its
+// largest magnitude
+void expect_agreement(const std::vector<std::vector<double>> &results, int first, int count,
+                      double relative, const std::string &what)
+{
+  double scale = 0.0;
+  for (double v : results[first]) scale = std::max(scale, std::fabs(v));
+  for (int k = 1; k < count; k++) {
+    const double diff = max_abs_diff(results[first + k], results[first]);
+    EXPECT_LT(diff, relative * scale) << what << " variant " << k << " diff " << diff;
+  }
+}
+
 // Atoms whose half of the box (the 2 x 2 x 1 decomposition of 4 ranks splits x and y at
 // the middle of the 7.2 box) changed between two snapshots, counting periodic wrap-arounds.
 double crossings(const std::vector<double> &before, const std::vector<double> &after)
@@ -115,22 +137,11 @@ TEST_F(Ranks, ImplicitTrajectoryAgreesAcrossRankCountsToSolverTolerance)
         results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
           l.cmds(fluid(newton));
           l.cmds({"fix 1 all etd scheme implicit tol 1e-10" + variant, "run 5 post no"});
-          auto v = l.gather("v");
-          auto x = l.gather("x");
-          v.insert(v.end(), x.begin(), x.end());
-          return v;
+          return velocities_and_positions(l);
         }));
   if (etdtest::world_rank() != 0) return;
-  for (int group = 0; group < 2; group++) {
-    const auto &reference = results[6 * group];
-    double scale = 0.0;
-    for (double v : reference) scale = std::max(scale, std::fabs(v));
-    for (int k = 1; k < 6; k++) {
-      const double diff = max_abs_diff(results[6 * group + k], reference);
-      EXPECT_LT(diff, 1e-7 * scale) << (group ? "overdamped" : "inertial") << " variant " << k
-                                    << " diff " << diff;
-    }
-  }
+  expect_agreement(results, 0, 6, 1e-7, "inertial");
+  expect_agreement(results, 6, 6, 1e-7, "overdamped");
 }
 
 // Slabs thinner than twice the neighbor cutoff (1.5 + skin 0.3 for the colloid-solvent pairs):
@@ -148,16 +159,8 @@ TEST_F(Ranks, ImplicitTrajectoryAgreesWithSlabsThinnerThanTwoCutoffs)
       l.cmds({"processors " + std::to_string(ranks) + " 1 1"});
       l.cmds(fluid("on", thin));
       l.cmds({"fix 1 all etd scheme implicit tol 1e-10", "run 5 post no"});
-      auto v = l.gather("v");
-      auto x = l.gather("x");
-      v.insert(v.end(), x.begin(), x.end());
-      return v;
+      return velocities_and_positions(l);
     }));
   if (etdtest::world_rank() != 0) return;
-  double scale = 0.0;
-  for (double v : results[0]) scale = std::max(scale, std::fabs(v));
-  for (int k = 1; k < 3; k++) {
-    const double diff = max_abs_diff(results[k], results[0]);
-    EXPECT_LT(diff, 1e-7 * scale) << "variant " << k << " diff " << diff;
-  }
+  expect_agreement(results, 0, 3, 1e-7, "thin slabs");
 }
