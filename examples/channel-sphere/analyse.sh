@@ -25,6 +25,8 @@ $PY $T drag --series "d/D=0.19:drag.D15.75_f0.016,drag.D15.75_f0.032" --series "
 echo "== rigid pipes, one-particle dpd/gen colloid (rcC = 1.22) against the 56-particle sphere (section 3.1)"
 $PY $T drag drag.D15.75_f0.032 drag.D15.75_f0.032_colloid_rc1.22 drag.D12_f0.054 drag.D12_f0.054_colloid_rc1.22 \
     drag.D9_f0.09 drag.D9_f0.09_colloid_rc1.22
+echo "== rigid pipes, one-particle dpd/fpm colloid (rc = 1.54, every pair dpd/fpm; section 3.2)"
+$PY $T drag drag.D15.75_f0.032_fpm_rc1.54 drag.D12_f0.054_fpm_rc1.54 drag.D9_f0.09_fpm_rc1.54
 echo "== compliant channel (d/D = 0.24, r_max = 3); U = mean velocity of the fluid inside r < D/2"
 $PY $T drag --velocity v_vcore drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno \
     drag.compliant_H8_rmax3_rigidno_r2
