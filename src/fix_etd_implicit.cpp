@@ -165,13 +165,9 @@ void FixETDImplicit::init()
   // On several ranks the list is newton off, so that a pair crossing ranks is held by both
   // (partner_exchange.h); on one rank there is no such pair, and the default list is a free
   // copy of the pair style's where the newton settings agree.
-  if (comm->nprocs > 1) {
-    etd::compat::request_fix_half_list_newton_off(neighbor, this, instance_me);
-    list_newton_off = true;
-  } else {
-    etd::compat::request_fix_half_list(neighbor, this, instance_me);
-    list_newton_off = !force->newton_pair;
-  }
+  const bool several_ranks = comm->nprocs > 1;
+  etd::compat::request_fix_half_list(neighbor, this, instance_me, several_ranks);
+  list_newton_off = several_ranks || !force->newton_pair;
   partners_built = -1;
 }
 

@@ -37,33 +37,22 @@ inline void request_half_list(LAMMPS_NS::Neighbor *neighbor, Requestor *requesto
 #endif
 }
 
-// A perpetual half neighbor list for a fix (the default newton setting).
-inline void request_fix_half_list(LAMMPS_NS::Neighbor *neighbor, LAMMPS_NS::Fix *fix, int instance)
+// A perpetual half neighbor list for a fix: the default newton setting, or with newton_off
+// newton off whatever the setting (a pair of an owned and a ghost atom is then listed on the
+// owned atom's side by every rank that owns one of the two, and twice on one rank where the
+// ghost is an image of an atom it owns).
+inline void request_fix_half_list(LAMMPS_NS::Neighbor *neighbor, LAMMPS_NS::Fix *fix, int instance,
+                                  bool newton_off = false)
 {
 #if ETD_LAMMPS_HAS_ADD_REQUEST
   (void) instance;
-  neighbor->add_request(fix);
+  neighbor->add_request(fix, newton_off ? LAMMPS_NS::NeighConst::REQ_NEWTON_OFF
+                                        : LAMMPS_NS::NeighConst::REQ_DEFAULT);
 #else
   const int irequest = neighbor->request(fix, instance);
   neighbor->requests[irequest]->pair = 0;
   neighbor->requests[irequest]->fix = 1;
-#endif
-}
-
-// A perpetual half neighbor list for a fix, newton off whatever the newton setting: a pair of
-// an owned and a ghost atom is listed on the owned atom's side, by every rank that owns one of
-// the two (and twice on one rank where the ghost is an image of an atom it owns).
-inline void request_fix_half_list_newton_off(LAMMPS_NS::Neighbor *neighbor, LAMMPS_NS::Fix *fix,
-                                             int instance)
-{
-#if ETD_LAMMPS_HAS_ADD_REQUEST
-  (void) instance;
-  neighbor->add_request(fix, LAMMPS_NS::NeighConst::REQ_NEWTON_OFF);
-#else
-  const int irequest = neighbor->request(fix, instance);
-  neighbor->requests[irequest]->pair = 0;
-  neighbor->requests[irequest]->fix = 1;
-  neighbor->requests[irequest]->newton = 2;
+  if (newton_off) neighbor->requests[irequest]->newton = 2;
 #endif
 }
 
@@ -92,15 +81,6 @@ inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
   comm->forward_comm(fix);
 #else
   comm->forward_comm_fix(fix);
-#endif
-}
-
-inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
-{
-#if ETD_LAMMPS_HAS_GENERIC_COMM
-  comm->reverse_comm(fix);
-#else
-  comm->reverse_comm_fix(fix);
 #endif
 }
 
