@@ -144,6 +144,11 @@ void FixETDImplicit::init()
       error->all(FLERR, "Fix etd scheme implicit: a pair style supplies no DPD coefficients");
     p->request_conservative_only();
   }
+  friction_cutsq_max = 0.0;
+  for (const etd::PairCoefficients *c : pair_table)
+    if (c && c->gamma != 0.0) friction_cutsq_max = std::max(friction_cutsq_max, c->rcsq_d);
+  for (const etd::FpmCoefficients *c : fpm_table)
+    if (c) friction_cutsq_max = std::max(friction_cutsq_max, c->rcsq);
   dofs = rotation ? 6 : 3;
   if (rotation) {
     if (!atom->omega_flag || !atom->torque_flag || !atom->radius_flag || !atom->rmass_flag)
@@ -327,6 +332,7 @@ void FixETDImplicit::build_pairs()
 
   pairs.clear();
   pair_noise.clear();
+  pair_tags.clear();
   fpm_pairs.clear();
   fpm_noise.clear();
   int fixed_partner = 0;
@@ -334,10 +340,16 @@ void FixETDImplicit::build_pairs()
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
     const bool i_mobile = mask[i] & groupbit;
+    const double xi0 = x[i][0], xi1 = x[i][1], xi2 = x[i][2];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      int j = jlist[jj];
-      const double factor = special_lj[(j >> SBBITS) & 3];
-      j &= NEIGHMASK;
+      const int j_bits = jlist[jj];
+      const int j = j_bits & NEIGHMASK;
+      // about half of the list lies in its skin: rejected by distance alone, before any of the
+      // per-pair lookups below
+      const double d[3] = {xi0 - x[j][0], xi1 - x[j][1], xi2 - x[j][2]};
+      const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      if (rsq >= friction_cutsq_max) continue;
+      const double factor = special_lj[(j_bits >> SBBITS) & 3];
       if (factor == 0.0) continue;
       int partner = j;
       if (j >= nlocal) {
@@ -349,8 +361,6 @@ void FixETDImplicit::build_pairs()
       const bool j_mobile = mask[j] & groupbit;
       if (!i_mobile && !j_mobile) continue;
       const etd::PairCoefficients *c = pair_table[type[i] * ntypes1 + type[j]];
-      const double d[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
-      const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       if (!c) {
         const etd::FpmCoefficients *fc = fpm_table[type[i] * ntypes1 + type[j]];
         if (fc && add_fpm_pair(*fc, i, partner, d, rsq, factor, tag[i], tag[j], step) && (!i_mobile || !j_mobile))
@@ -363,17 +373,22 @@ void FixETDImplicit::build_pairs()
       const double inv_r = 1.0 / r;
       const double q = 1.0 - r * c->inv_rc_d;
       const double w_r = etd::power_of(q, c->random_kind, 0.5 * c->s);
-      etd::FrictionPair p;
+      // written in place (a pair assembled on the stack and copied stalled on the copy)
+      pairs.emplace_back();
+      etd::FrictionPair &p = pairs.back();
       p.i = i;
       p.j = partner;
       for (int k = 0; k < 3; k++) p.e[k] = static_cast<float>(d[k] * inv_r);
       p.friction = static_cast<float>(factor * c->gamma * w_r * w_r);
-      pairs.push_back(p);
-      const double amplitude = (factor == 1.0 ? 1.0 : std::sqrt(factor)) * c->sigma * w_r;
-      pair_noise.push_back(amplitude * noise.gaussian(tag[i], tag[j], step));
+      // the amplitude now, the Gaussian in a second pass: without the generator in it this
+      // loop is short enough for the processor to overlap the square roots of successive pairs
+      pair_noise.push_back((factor == 1.0 ? 1.0 : std::sqrt(factor)) * c->sigma * w_r);
+      pair_tags.push_back({tag[i], tag[j]});
       if (!i_mobile || !j_mobile) fixed_partner = 1;
     }
   }
+  for (size_t n = 0; n < pairs.size(); n++)
+    pair_noise[n] *= noise.gaussian(pair_tags[n].first, pair_tags[n].second, step);
   etd::find_runs(pairs, pair_runs);
   int any = 0;
   MPI_Allreduce(&fixed_partner, &any, 1, MPI_INT, MPI_MAX, world);
@@ -416,6 +431,14 @@ bool FixETDImplicit::add_fpm_pair(const etd::FpmCoefficients &c, int i, int j, c
 // velocities).
 void FixETDImplicit::apply_friction(const double *u, std::vector<double> &gu, bool group_only)
 {
+  gather_operand(u, group_only);
+  gu.assign(dofs * atom->nlocal, 0.0);
+  accumulate_friction(operand.data(), gu.data());
+}
+
+// operand = u on all partners (u given on owned atoms; the remote slots filled by their owners)
+void FixETDImplicit::gather_operand(const double *u, bool group_only)
+{
   const int nlocal = atom->nlocal;
   const int *mask = atom->mask;
   operand.resize(dofs * npartners());
@@ -428,21 +451,19 @@ void FixETDImplicit::apply_friction(const double *u, std::vector<double> &gu, bo
     std::copy(u, u + dofs * nlocal, operand.begin());
   }
   partners->exchange(operand.data(), nlocal, dofs);
-  accumulate_friction(operand.data(), gu);
 }
 
-// gu = G u over owned atoms from u given on all partners (a remote partner's share is its
-// owner's to compute)
-void FixETDImplicit::accumulate_friction(const double *u, std::vector<double> &gu) const
+// gu += scale G u over owned atoms from u given on all partners (a remote partner's share is
+// its owner's to compute)
+void FixETDImplicit::accumulate_friction(const double *u, double *gu, double scale) const
 {
   const int nlocal = atom->nlocal;
-  gu.assign(dofs * nlocal, 0.0);
   auto keep_j = [=](int j) { return j < nlocal; };
   if (dofs == 3)
-    etd::accumulate_friction_by_runs<3>(pairs, pair_runs, u, gu.data(), keep_j);
+    etd::accumulate_friction_by_runs<3>(pairs, pair_runs, u, gu, keep_j, scale);
   else
-    etd::accumulate_friction_by_runs<6>(pairs, pair_runs, u, gu.data(), keep_j);
-  if (dofs == 6) etd::accumulate_fpm_friction(fpm_pairs, u, gu.data(), keep_j);
+    etd::accumulate_friction_by_runs<6>(pairs, pair_runs, u, gu, keep_j, scale);
+  if (dofs == 6) etd::accumulate_fpm_friction(fpm_pairs, u, gu, keep_j, scale);
 }
 
 // the random impulse sum_pairs B xi, times scale, on owned atoms (a pair that crosses ranks
@@ -524,14 +545,12 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
   };
   if (deflate && group_count > 0.0) remove_mean(rhs.data());
 
-  std::vector<double> &gu = work.gu;
+  // au = mass_weight M u + friction_weight G u, atoms outside the group at rest (the solver
+  // zeroes their rows, which it holds)
   auto apply = [&](const double *u, double *au) {
-    apply_friction(u, gu, true);
-    for (int i = 0; i < nlocal; i++) {
-      const bool mobile = mask[i] & groupbit;
-      for (int k = dofs * i; k < dofs * (i + 1); k++)
-        au[k] = mobile ? mass_weight * masses[k] * u[k] + friction_weight * gu[k] : 0.0;
-    }
+    gather_operand(u, true);
+    for (int k = 0; k < n; k++) au[k] = mass_weight * masses[k] * u[k];
+    accumulate_friction(operand.data(), au, friction_weight);
     if (deflate) remove_mean(au);
   };
 
@@ -621,7 +640,8 @@ void FixETDImplicit::friction_noise_step()
     if (mask[p < nlocal ? p : slot_ghost[p - nlocal]] & groupbit) continue;
     for (int k = 0; k < dofs; k++) u[dofs * p + k] *= 2.0;
   }
-  accumulate_friction(u.data(), gu);
+  gu.assign(dofs * nlocal, 0.0);
+  accumulate_friction(u.data(), gu.data());
   random_impulse(std::sqrt(h), impulse);
   for (int i = 0; i < nlocal; i++)
     for (int k = 0; k < dofs; k++) {
@@ -637,8 +657,12 @@ void FixETDImplicit::friction_noise_step()
         (warm_start && !any_fixed_partner) ? &gu : nullptr);
 
   // The exact solution conserves the group's momentum when no pair couples it to atoms outside
-  // it (the rows of G sum to zero, so sum M v' = sum rhs); an iterate leaves an error of the
-  // order of the tolerance, which would random-walk over a long run. Remove it exactly.
+  // it (the rows of G sum to zero and the random impulses cancel in pairs, so sum M v' = sum
+  // M v); an iterate leaves an error of the order of the tolerance, which would random-walk
+  // over a long run. Remove it exactly, against the old momentum itself rather than sum rhs: a
+  // pair that crosses ranks is built on each rank from its own image of the other atom, so its
+  // two halves cancel only to rounding of single-precision e_ij, which the sums of G u and B xi
+  // would carry into the momentum.
   // One reduction for both this and the kinetic energy of the shifted velocities below:
   // sum m (v + c)^2 = sum m v^2 + 2 c . sum m v + c^2 sum m.
   enum { DEFICIT = 0, MASS = 3, MOMENTUM = 4, TWICE_KINETIC = 7, COMPONENTS = 8, NSUMS = 9 };
@@ -648,7 +672,7 @@ void FixETDImplicit::friction_noise_step()
       const double m = inertia[dofs * i];
       const double *s = &solution[dofs * i];
       for (int k = 0; k < 3; k++) {
-        local[DEFICIT + k] += rhs[dofs * i + k] - m * s[k];
+        local[DEFICIT + k] += m * (*dof_pointer(i, k) - s[k]);
         local[MOMENTUM + k] += m * s[k];
       }
       local[MASS] += m;

@@ -11,6 +11,7 @@
 
 #include <initializer_list>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace etd {
@@ -62,11 +63,13 @@ class FixETDImplicit : public Fix {
   std::vector<etd::DpdExtrasProvider *> providers;
   std::vector<const etd::PairCoefficients *> pair_table;    // (ntypes+1)^2, nullptr: no DPD
   std::vector<const etd::FpmCoefficients *> fpm_table;      // the same for dpd/fpm pairs
+  double friction_cutsq_max = 0.0;    // the largest squared friction cutoff of any type pair
   int dofs;    // unknowns per atom: 3 (v), or 6 (v and Omega) when dpd/fpm pairs take part
   etd::PairNoise noise;
   std::vector<etd::FrictionPair> pairs;    // this step's geometry
   std::vector<etd::PairRun> pair_runs;     // its stretches of pairs with the same atom i
   std::vector<double> pair_noise;          // and each pair's sigma w_R theta
+  std::vector<std::pair<tagint, tagint>> pair_tags;    // (its atom IDs, which key the noise)
   std::vector<etd::FpmFrictionPair> fpm_pairs;    // dpd/fpm pairs of this step
   std::vector<double> fpm_noise;                  // and their random forces (3 per pair)
   bool any_fixed_partner;                  // some pair couples to an atom outside the group
@@ -101,7 +104,7 @@ class FixETDImplicit : public Fix {
 
   // work vectors reused from step to step (per-step allocation costs page faults at scale)
   struct Work {
-    std::vector<double> masses, rhs, inv_diag, block_inverse, gu, start_product;    // solve()
+    std::vector<double> masses, rhs, inv_diag, block_inverse, start_product;    // solve()
     std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia, predicted;    // the steps
     std::vector<double> ghost_u, ghost_owner;    // per ghost: velocities, owner (rank, index)
     std::vector<double> mean, gmean;    // record_split()
@@ -131,7 +134,8 @@ class FixETDImplicit : public Fix {
   void dof_inertia(std::vector<double> &inertia) const;
   double *dof_pointer(int i, int k) const;
   void apply_friction(const double *u, std::vector<double> &gu, bool group_only);
-  void accumulate_friction(const double *u, std::vector<double> &gu) const;
+  void gather_operand(const double *u, bool group_only);
+  void accumulate_friction(const double *u, double *gu, double scale = 1.0) const;
   void friction_noise_step();
   void overdamped_step();
   bool overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity, bool singular_ok);

@@ -71,11 +71,12 @@ inline void find_runs(const std::vector<FrictionPair> &pairs, std::vector<PairRu
 }
 
 // The same sum as accumulate_friction(), run by run (Stride = 3 or 6 values per atom, the
-// first 3 of which G acts on)
+// first 3 of which G acts on), times scale (so that a solver adds its weighted G u straight
+// into M u, without a separate vector pass)
 template <int Stride, typename UpdateJ>
 inline void accumulate_friction_by_runs(const std::vector<FrictionPair> &pairs,
                                         const std::vector<PairRun> &runs, const double *u,
-                                        double *out, UpdateJ update_j)
+                                        double *out, UpdateJ update_j, double scale = 1.0)
 {
   const FrictionPair *pair = pairs.data();
   for (const PairRun &run : runs) {
@@ -86,7 +87,7 @@ inline void accumulate_friction_by_runs(const std::vector<FrictionPair> &pairs,
       const FrictionPair &p = pair[n];
       const double *uj = u + Stride * p.j;
       const double e0 = p.e[0], e1 = p.e[1], e2 = p.e[2];
-      const double projected = p.friction * (e0 * (ui0 - uj[0]) + e1 * (ui1 - uj[1]) + e2 * (ui2 - uj[2]));
+      const double projected = scale * p.friction * (e0 * (ui0 - uj[0]) + e1 * (ui1 - uj[1]) + e2 * (ui2 - uj[2]));
       const double f0 = projected * e0, f1 = projected * e1, f2 = projected * e2;
       sum0 += f0;
       sum1 += f1;
@@ -193,7 +194,7 @@ inline void scatter_fpm(const FpmFrictionPair &p, const double force[3], double 
 
 template <typename UpdateJ>
 inline void accumulate_fpm_friction(const std::vector<FpmFrictionPair> &pairs, const double *q,
-                                    double *out, UpdateJ update_j)
+                                    double *out, UpdateJ update_j, double scale = 1.0)
 {
   for (const FpmFrictionPair &p : pairs) {
     const double *qi = q + 6 * p.i, *qj = q + 6 * p.j;
@@ -201,9 +202,10 @@ inline void accumulate_fpm_friction(const std::vector<FpmFrictionPair> &pairs, c
     const double u[3] = {qi[0] - qj[0] + p.half_r * (p.e[1] * spin[2] - p.e[2] * spin[1]),
                          qi[1] - qj[1] + p.half_r * (p.e[2] * spin[0] - p.e[0] * spin[2]),
                          qi[2] - qj[2] + p.half_r * (p.e[0] * spin[1] - p.e[1] * spin[0])};
-    const double normal = (p.central - p.shear) * (p.e[0] * u[0] + p.e[1] * u[1] + p.e[2] * u[2]);
-    const double force[3] = {p.shear * u[0] + normal * p.e[0], p.shear * u[1] + normal * p.e[1],
-                             p.shear * u[2] + normal * p.e[2]};
+    const double shear = scale * p.shear;
+    const double normal = scale * (p.central - p.shear) * (p.e[0] * u[0] + p.e[1] * u[1] + p.e[2] * u[2]);
+    const double force[3] = {shear * u[0] + normal * p.e[0], shear * u[1] + normal * p.e[1],
+                             shear * u[2] + normal * p.e[2]};
     scatter_fpm(p, force, out, update_j);
   }
 }
@@ -317,33 +319,31 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
   // r: residual, z: preconditioned residual, w = A z, p: search direction, s = A p
   double *r = work.r.data(), *z = work.z.data(), *p = work.p.data(), *w = work.w.data(),
          *s = work.s.data();
-  auto precondition = [&]() {
+  // z = P r on the unknowns [begin, end) (whole atoms with the block preconditioner), so that
+  // the iteration's update can precondition each atom's residual right after updating it
+  auto precondition_range = [&](int begin, int end) {
     if (!block_inverse) {
-      for (int k = 0; k < n; k++) z[k] = inv_diag[k] * r[k];
+      for (int k = begin; k < end; k++) z[k] = inv_diag[k] * r[k];
     } else {
-      for (int a = 0; a < n / 3; a++) {
+      for (int a = begin / 3; a < end / 3; a++) {
         const double *m = block_inverse + 9 * a;
         const double *ra = r + 3 * a;
         for (int k = 0; k < 3; k++)
           z[3 * a + k] = (inv_diag[3 * a + k] != 0.0) ? m[3 * k] * ra[0] + m[3 * k + 1] * ra[1] + m[3 * k + 2] * ra[2] : 0.0;
       }
     }
-    project(z);
-  };
-  // w = A z, zero on held unknowns (so that r, updated by s, stays zero there)
-  auto apply_to_z = [&]() {
-    apply(z, w);
-    for (int k = 0; k < n; k++)
-      if (inv_diag[k] == 0.0) w[k] = 0.0;
   };
   // the one reduction of an iteration: rz = (r,z), wz = (w,z), rr = (r,r), and for the next
   // residual's norm rw = (r,w), rs = (r,s), ww = (w,w), ws = (w,s), ss = (s,s), with s the
-  // previous A p
+  // previous A p. w = A z is first zeroed on held unknowns (so that r, updated by s, stays zero
+  // there), in the same pass.
   enum { RZ, WZ, RR, RW, RS, WW, WS, SS, BB, NSUMS };
   double sums[NSUMS];
-  auto reduce = [&](bool with_b) {
+  auto apply_and_reduce = [&](bool with_b) {
+    apply(z, w);
     for (double &v : sums) v = 0.0;
     for (int k = 0; k < n; k++) {
+      if (inv_diag[k] == 0.0) w[k] = 0.0;
       sums[RZ] += r[k] * z[k];
       sums[WZ] += w[k] * z[k];
       sums[RR] += r[k] * r[k];
@@ -367,9 +367,9 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
   }
   const double *ax = start_product ? start_product : w;
   for (int k = 0; k < n; k++) r[k] = (inv_diag[k] != 0.0) ? b[k] - ax[k] : 0.0;
-  precondition();
-  apply_to_z();
-  reduce(true);
+  precondition_range(0, n);
+  project(z);
+  apply_and_reduce(true);
   const double bb = sums[BB];
   if (bb == 0.0) {
     for (int k = 0; k < n; k++) x[k] = 0.0;
@@ -385,11 +385,17 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
     if (!(curvature > 0.0) || !(rz > 0.0)) break;    // breakdown: A not positive (cannot happen for SPD A)
     alpha = rz / curvature;
     rz_old = rz;
-    for (int k = 0; k < n; k++) {
-      p[k] = z[k] + beta * p[k];
-      s[k] = w[k] + beta * s[k];
-      x[k] += alpha * p[k];
-      r[k] -= alpha * s[k];
+    // the update and the next preconditioned residual in one pass, a block of 3 unknowns at a
+    // time (if the iteration turns out converged below, that z goes unused)
+    for (int begin = 0; begin < n; begin += 3) {
+      const int end = begin + 3 < n ? begin + 3 : n;
+      for (int k = begin; k < end; k++) {
+        p[k] = z[k] + beta * p[k];
+        s[k] = w[k] + beta * s[k];
+        x[k] += alpha * p[k];
+        r[k] -= alpha * s[k];
+      }
+      precondition_range(begin, end);
     }
     result.iterations++;
     // |r - alpha s|^2 with s = w + beta s_old, from this iteration's sums
@@ -403,9 +409,8 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
       rr = actual;
       if (rr <= target || result.iterations >= max_iterations) break;
     }
-    precondition();
-    apply_to_z();
-    reduce(false);
+    project(z);
+    apply_and_reduce(false);
     rr = sums[RR];
   }
   result.relative_residual = std::sqrt(rr / bb);
