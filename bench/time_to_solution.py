@@ -5,6 +5,7 @@ limits the step: VISCOSITY_MAX_DT), and the wall-clock seconds per unit of simul
 that step, all in one go on the same machine.
 
 Usage: bench/time_to_solution.py LMP PLUGIN [--time T] [--out FILE] [--ranks N] [--masses M ...]
+                                  [--implicit-newton on|off]
 The system is validation/in.temperature_scan (4,000 atoms, n = 4, a = 18.75, gamma = 4.5,
 s = 1/2, kBT = 1). Stock = pair dpd/ext (ws = s/2) + fix nve.
 """
@@ -53,7 +54,15 @@ CASES = [
 VISCOSITY_MAX_DT = {0.001: 0.001}
 
 
-def run(lmp, plugin, pair, integrator, mass, dt, time, workdir, equil=None, ranks=1):
+# On several ranks the implicit scheme runs with newton off: its solver needs a newton-off
+# neighbor list there, which it then shares with the pair style instead of building a second
+# one (about 10 % of a step on 2 ranks). Stock dpd/ext and the diagonal scheme keep LAMMPS's
+# default newton on: stock dpd/ext + nve is about 15 % slower with newton off (doc/benchmarks.md).
+def newton_setting(integrator, ranks, implicit_newton):
+    return implicit_newton if "implicit" in integrator and ranks > 1 else "on"
+
+
+def run(lmp, plugin, pair, integrator, mass, dt, time, workdir, equil=None, ranks=1, newton="on"):
     log = os.path.join(workdir, "log.lammps")
     equil = 0.25 * time if equil is None else equil
     mpi = []
@@ -62,6 +71,7 @@ def run(lmp, plugin, pair, integrator, mass, dt, time, workdir, equil=None, rank
     cmd = mpi + [lmp, "-in", SCAN, "-var", "plugin", plugin, "-var", "pair", pair, "-var", "integrator",
            integrator, "-var", "mass", str(mass), "-var", "dt", str(dt), "-var", "time", str(time),
            "-var", "equil", str(equil), "-var", "friction_step", "yes" if "implicit" in integrator else "no",
+           "-var", "newton", newton,
            "-log", log, "-screen", "none"]
     done = subprocess.run(cmd, cwd=workdir)
     text = open(log).read() if os.path.exists(log) else ""
@@ -85,11 +95,14 @@ def main():
     parser.add_argument("--rounds", type=int, default=3, help="timing rounds (fastest kept)")
     parser.add_argument("--ranks", type=int, default=1, help="MPI ranks")
     parser.add_argument("--masses", type=float, nargs="*", default=None, help="only these masses")
+    parser.add_argument("--implicit-newton", choices=["on", "off"], default="off",
+                        help="newton pair setting of the implicit scheme on several ranks (default off)")
     args = parser.parse_args()
     # the runs work in temporary directories: relative paths would not resolve there
     args.plugin = os.path.abspath(args.plugin)
     cases = [c for c in CASES if args.masses is None or c[3] in args.masses]
-    lines = [f"MPI ranks: {args.ranks}", "", "| mass | integrator | dt | kBT | kBT after the friction step | s per time unit |",
+    implicit_newton = newton_setting("implicit", args.ranks, args.implicit_newton)
+    lines = [f"MPI ranks: {args.ranks}; newton {implicit_newton} for the implicit scheme, on for the others", "", "| mass | integrator | dt | kBT | kBT after the friction step | s per time unit |",
              "|---|---|---|---|---|---|"]
     best = {}
     best_friction_step = {}    # the implicit scheme judged by its friction-step kBT (output 5)
@@ -100,7 +113,8 @@ def main():
                 # (no velocity relaxation) keeps the full length
                 length = args.time if "overdamped" in integrator else MASS_TIME.get(mass, args.time)
                 kT, cost, kT_friction = run(args.lmp, args.plugin, pair, integrator, mass, dt, length,
-                                            workdir, ranks=args.ranks)
+                                            workdir, ranks=args.ranks,
+                                            newton=newton_setting(integrator, args.ranks, args.implicit_newton))
                 shown = "fails" if kT is None else ("n/a" if "overdamped" in integrator else f"{kT:.4f}")
                 shown_friction = "" if kT_friction is None or "overdamped" in integrator else f"{kT_friction:.4f}"
                 lines.append(f"| {mass} | {label} | {dt} | {shown} | {shown_friction} | "
@@ -120,7 +134,8 @@ def main():
         for _ in range(args.rounds):
             for key, (dt, cost, pair, integrator) in best.items():
                 _, seconds, _ = run(args.lmp, args.plugin, pair, integrator, key[0], dt, 400 * dt, workdir,
-                                 equil=max(100 * dt, 0.02), ranks=args.ranks)
+                                 equil=max(100 * dt, 0.02), ranks=args.ranks,
+                                 newton=newton_setting(integrator, args.ranks, args.implicit_newton))
                 if seconds is not None and seconds < best[key][1]:
                     best[key] = (dt, seconds, pair, integrator)
     lines += ["", "Largest step within 1 % of kBT = 1 (and, at m = 0.001, no larger than the step where the",
