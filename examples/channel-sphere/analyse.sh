@@ -83,3 +83,9 @@ for f in drag.compliant_H8_rmax3_rigidyes drag.compliant_H1_rmax3_rigidno drag.c
          drag.compliant_H8_rmax3_rigidno_rest_diag_outer drag.compliant_H8_rmax1.02_rigidno_rest_diag_outer; do
     echo "$f:"; awk '!/^#/ && $1 % 1000 == 0 {printf "  %d %.3f %.0f\n", $1, $13, $12}' $f
 done
+echo "== compliant channel, one-particle dpd/gen colloid (rcC = 1.22) against the 56-particle sphere (section 4.4)"
+$PY $T drag --velocity v_vcore drag.colloid_rigid drag.colloid_H8_rmax3_outer drag.colloid_H1_rmax3_outer \
+    drag.long_rigid+drag.compliant_H8_rmax3_rigidyes \
+    drag.long_H8_rmax3_outer+drag.compliant_H8_rmax3_rigidno_rest_diag_outer \
+    drag.long_H1_rmax3_outer+drag.compliant_H1_rmax3_rigidno_rest_diag_outer
+$PY $T radius wall_radius.colloid_rigid wall_radius.colloid_H8_rmax3_outer wall_radius.colloid_H1_rmax3_outer
