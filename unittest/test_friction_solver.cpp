@@ -129,23 +129,27 @@ TEST(FrictionOperator, RunByRunKernelIsThePairByPairSum)
     const int n = stride * c.natoms;
     std::vector<double> u(n);
     for (double &value : u) value = normal(gen);
+    // variant 1 also adds a scaled G u to values already there (what the solver does with M u)
     for (int variant = 0; variant < 2; variant++) {
-      std::vector<double> by_pairs(n, 0.0), by_runs(n, 0.0);
+      const double scale = variant == 0 ? 1.0 : -0.75;
+      std::vector<double> by_pairs(n, 0.0), by_runs(n, 0.0), start(n, 0.0);
+      if (variant == 1)
+        for (int k = 0; k < n; k++) start[k] = by_runs[k] = 0.1 * (k % 7) - 0.3;
       if (variant == 0) {
         etd::accumulate_friction(c.pairs, u.data(), by_pairs.data(), all_local, stride);
         if (stride == 3) etd::accumulate_friction_by_runs<3>(c.pairs, runs, u.data(), by_runs.data(), all_local);
         else etd::accumulate_friction_by_runs<6>(c.pairs, runs, u.data(), by_runs.data(), all_local);
       } else {
         etd::accumulate_friction(c.pairs, u.data(), by_pairs.data(), even_j_only, stride);
-        if (stride == 3) etd::accumulate_friction_by_runs<3>(c.pairs, runs, u.data(), by_runs.data(), even_j_only);
-        else etd::accumulate_friction_by_runs<6>(c.pairs, runs, u.data(), by_runs.data(), even_j_only);
+        if (stride == 3) etd::accumulate_friction_by_runs<3>(c.pairs, runs, u.data(), by_runs.data(), even_j_only, scale);
+        else etd::accumulate_friction_by_runs<6>(c.pairs, runs, u.data(), by_runs.data(), even_j_only, scale);
       }
       double largest = 0.0;
       for (double value : by_pairs) largest = std::max(largest, std::fabs(value));
       ASSERT_GT(largest, 1.0);
       for (int k = 0; k < n; k++) {
-        EXPECT_NEAR(by_runs[k], by_pairs[k], 1e-12 * largest) << "stride " << stride << " value " << k;
-        if (stride == 6 && k % 6 >= 3) EXPECT_EQ(by_runs[k], 0.0);
+        EXPECT_NEAR(by_runs[k], start[k] + scale * by_pairs[k], 1e-12 * largest) << "stride " << stride << " value " << k;
+        if (stride == 6 && k % 6 >= 3) EXPECT_EQ(by_runs[k], start[k]);
       }
     }
   }
@@ -386,6 +390,10 @@ TEST(FrictionOperator, FpmPairOperatorIsTheKernelsFriction)
     EXPECT_NEAR(gq[3 + k], -kernel.torque[k] * scale, 1e-5 * std::fabs(kernel.torque[k]) + 1e-6);
     EXPECT_NEAR(gq[9 + k], -kernel.torque[k] * scale, 1e-5 * std::fabs(kernel.torque[k]) + 1e-6);
   }
+  // a weight on G (what the solver adds into M q) scales every component
+  std::vector<double> weighted(12, 1.0);
+  etd::accumulate_fpm_friction(pairs, q.data(), weighted.data(), all, 0.3);
+  for (int k = 0; k < 12; k++) EXPECT_NEAR(weighted[k], 1.0 + 0.3 * gq[k], 1e-12 * (1.0 + std::fabs(gq[k])));
   // symmetric and positive semidefinite
   std::vector<double> y(12), gy(12, 0.0);
   for (double &value : y) value = normal(gen);
