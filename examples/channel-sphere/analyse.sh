@@ -89,3 +89,6 @@ $PY $T drag --velocity v_vcore drag.colloid_rigid drag.colloid_H8_rmax3_outer dr
     drag.long_H8_rmax3_outer+drag.compliant_H8_rmax3_rigidno_rest_diag_outer \
     drag.long_H1_rmax3_outer+drag.compliant_H1_rmax3_rigidno_rest_diag_outer
 $PY $T radius wall_radius.colloid_rigid wall_radius.colloid_H8_rmax3_outer wall_radius.colloid_H1_rmax3_outer
+echo "== compliant channel, one-particle dpd/fpm colloid (rc = 1.54, every pair dpd/fpm; section 4.4)"
+$PY $T drag --velocity v_vcore drag.fpm_rigid drag.fpm_H8_rmax3_outer
+$PY $T radius wall_radius.fpm_rigid wall_radius.fpm_H8_rmax3_outer
