@@ -56,8 +56,8 @@ VISCOSITY_MAX_DT = {0.001: 0.001}
 
 # On several ranks the implicit scheme runs with newton off: its solver needs a newton-off
 # neighbor list there, which it then shares with the pair style instead of building a second
-# one (about 10 % of a step on 2 ranks). Stock dpd/ext and the diagonal scheme keep LAMMPS's
-# default newton on: stock dpd/ext + nve is about 15 % slower with newton off (doc/benchmarks.md).
+# one (13 % shorter steps on 2 ranks, doc/benchmarks.md). Stock dpd/ext and the diagonal scheme keep LAMMPS's
+# default newton on: stock dpd/ext + nve is about 15 % slower with newton off.
 def newton_setting(integrator, ranks, implicit_newton):
     return implicit_newton if "implicit" in integrator and ranks > 1 else "on"
 

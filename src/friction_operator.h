@@ -319,20 +319,20 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
   // r: residual, z: preconditioned residual, w = A z, p: search direction, s = A p
   double *r = work.r.data(), *z = work.z.data(), *p = work.p.data(), *w = work.w.data(),
          *s = work.s.data();
-  // z = P r on the unknowns [begin, end) (whole atoms with the block preconditioner). (Fusing it
-  // into the iteration's update loop, atom by atom, measured no faster: the update loop then
-  // no longer vectorises.)
-  auto precondition_range = [&](int begin, int end) {
+  // z = P r, projected. (Fusing this into the iteration's update loop, atom by atom, measured
+  // no faster: the update loop then no longer vectorises.)
+  auto precondition = [&]() {
     if (!block_inverse) {
-      for (int k = begin; k < end; k++) z[k] = inv_diag[k] * r[k];
+      for (int k = 0; k < n; k++) z[k] = inv_diag[k] * r[k];
     } else {
-      for (int a = begin / 3; a < end / 3; a++) {
+      for (int a = 0; a < n / 3; a++) {
         const double *m = block_inverse + 9 * a;
         const double *ra = r + 3 * a;
         for (int k = 0; k < 3; k++)
           z[3 * a + k] = (inv_diag[3 * a + k] != 0.0) ? m[3 * k] * ra[0] + m[3 * k + 1] * ra[1] + m[3 * k + 2] * ra[2] : 0.0;
       }
     }
+    project(z);
   };
   // the one reduction of an iteration: rz = (r,z), wz = (w,z), rr = (r,r), and for the next
   // residual's norm rw = (r,w), rs = (r,s), ww = (w,w), ws = (w,s), ss = (s,s), with s the
@@ -368,8 +368,7 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
   }
   const double *ax = start_product ? start_product : w;
   for (int k = 0; k < n; k++) r[k] = (inv_diag[k] != 0.0) ? b[k] - ax[k] : 0.0;
-  precondition_range(0, n);
-  project(z);
+  precondition();
   apply_and_reduce(true);
   const double bb = sums[BB];
   if (bb == 0.0) {
@@ -404,8 +403,7 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
       rr = actual;
       if (rr <= target || result.iterations >= max_iterations) break;
     }
-    precondition_range(0, n);
-    project(z);
+    precondition();
     apply_and_reduce(false);
     rr = sums[RR];
   }
