@@ -20,6 +20,7 @@ C_D = 24/Re (1 + 0.150 Re^0.681) + 0.407 / (1 + 8710/Re).
   tools/channel_sphere.py drag examples/channel-sphere/drag.U*           # table
   tools/channel_sphere.py drag --series "rigid:drag.U0.5,drag.U0.9" --series "..." --png cd.png
   tools/channel_sphere.py radius wall_radius.H2 ...                     # compliant walls
+  tools/channel_sphere.py tube 4.5 4.9         # wall factor: drag in a wider tube, same U
 
 Defaults: rho = 4 (n = 4, m = 1), d = 3, eta = 1.083 (kinetic theory of standard DPD with
 a = 18.75, gamma = 4.5, kBT = 1, n = 4, rc = 1: 0.796 kinetic + 0.287 dissipative).
@@ -40,6 +41,25 @@ def correlation_cd(re):
 
 def stokes_cd(re):
     return 24.0 / np.asarray(re, dtype=float)
+
+
+def _tube_denominator(lam):
+    return 1.0 - 2.1050 * lam + 2.0865 * lam**3 - 1.7068 * lam**5 + 0.72603 * lam**6
+
+
+def tube_factor_quiescent(lam):
+    """Haberman and Sayre's wall factor K for a sphere (diameter / tube diameter = lam) moving
+    along the axis of a tube of fluid at rest: drag = 6 pi eta a U K."""
+    lam = np.asarray(lam, dtype=float)
+    return (1.0 - 0.75857 * lam**5) / _tube_denominator(lam)
+
+
+def tube_factor_poiseuille(lam):
+    """Haberman and Sayre's factor for a sphere held on the axis of a Poiseuille flow with
+    centre-line velocity V: drag = 6 pi eta a V K'. The numerator's -2/3 lam^2 is Faxen's
+    correction for the curvature of the profile; the mean velocity is V/2."""
+    lam = np.asarray(lam, dtype=float)
+    return (1.0 - 2.0 / 3.0 * lam**2 - 0.20217 * lam**5) / _tube_denominator(lam)
 
 
 def read_ave_time(path):
@@ -294,8 +314,18 @@ def radius_command(args):
                 out.append((f'{path.split("/")[-1]} step {step}', x, prof, None, None))
         else:
             out.append((path, x, mean_r, overall, overall_err))
+        near_text = ''
+        if args.near is not None:   # the bins within --near of the sphere (the box's middle)
+            centre = 0.5 * (x.min() + x.max()) if args.sphere_x is None else args.sphere_x
+            close = np.abs(x - centre) < args.near
+            if not close.any():
+                sys.exit(f'channel_sphere: no bin of {path} lies within {args.near} of x = {centre}')
+            near_block = (radius[:, close] * count[:, close]).sum(axis=1) / count[:, close].sum(axis=1)
+            near_text = f'; within {args.near:g} of x = {centre:.2f}: {near_block.mean():.4f}'
+            if len(blocks) >= 4:
+                near_text += f' +- {batch_mean(near_block, min(args.batches, len(blocks) // 2))[1]:.4f}'
         print(f'{path}: mean wall radius {overall:.4f} +- {err_text}; '
-              f'min over x {mean_r.min():.4f}, max {mean_r.max():.4f}')
+              f'min over x {mean_r.min():.4f}, max {mean_r.max():.4f}{near_text}')
     if args.png:
         import matplotlib
         matplotlib.use('Agg')
@@ -311,6 +341,23 @@ def radius_command(args):
         fig.tight_layout()
         fig.savefig(args.png)
         print(f'wrote {args.png}')
+
+
+def tube_command(args):
+    """Haberman and Sayre's wall factors for the sphere in tubes of the given radii, and the drag
+    at a fixed mean velocity relative to the first radius (Poiseuille factor)."""
+    if args.d <= 0.0:
+        sys.exit('channel_sphere: tube --d must be positive')
+    for r in args.radii:
+        if r <= 0.5 * args.d:
+            sys.exit(f'channel_sphere: tube radius {r} must exceed the sphere radius {0.5 * args.d}')
+    first = None
+    print('radius     d/D     K (fluid at rest)   K\' (Poiseuille)   drag / first radius')
+    for r in args.radii:
+        lam = args.d / (2.0 * r)
+        k_rest, k_flow = float(tube_factor_quiescent(lam)), float(tube_factor_poiseuille(lam))
+        first = k_flow if first is None else first
+        print(f'{r:8.4f}  {lam:6.4f}  {k_rest:12.4f}  {k_flow:16.4f}  {k_flow / first:16.4f}')
 
 
 def main(argv=None):
@@ -344,10 +391,19 @@ def main(argv=None):
     radius.add_argument('--discard', type=float, default=0.2)
     radius.add_argument('--batches', type=int, default=10)
     radius.add_argument('--png')
+    radius.add_argument('--near', type=float,
+                        help='also the mean radius of the bins within this distance of the sphere')
+    radius.add_argument('--sphere-x', type=float,
+                        help='the sphere\'s x (default: the middle of the bins)')
     radius.add_argument('--each', action='store_true',
                         help='print and plot the profile of every kept block, not their mean')
+    tube = sub.add_parser('tube', help='wall factor of a sphere on the axis of a tube')
+    tube.add_argument('radii', nargs='+', type=float, help='tube radii (the first is the reference)')
+    tube.add_argument('--d', type=float, default=3.0, help='sphere diameter')
     args = parser.parse_args(argv)
-    if args.command == 'drag':
+    if args.command == 'tube':
+        tube_command(args)
+    elif args.command == 'drag':
         if not 0.0 <= args.discard < 1.0:
             sys.exit('channel_sphere: --discard must be in [0, 1)')
         drag_command(args)

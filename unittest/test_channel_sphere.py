@@ -74,5 +74,57 @@ class Drag(unittest.TestCase):
         self.assertAlmostEqual(both["C_D_correlation"], channel_sphere.correlation_cd(both["Re"]), places=12)
 
 
+class WallRadius(unittest.TestCase):
+    def test_near_window_sees_a_local_bulge(self):
+        # 20 bins of width 1.26; the wall bulges to 7 in the 4 middle bins, 6.5 elsewhere
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "wall_radius.x")
+            with open(path, "w") as out:
+                out.write("# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n"
+                          "# Chunk Coord1 Ncount v_wall_r\n")
+                for block in range(10):
+                    out.write(f"{1000 * (block + 1)} 21 2000\n")
+                    for k in range(21):
+                        x = (k + 0.5) * 1.26
+                        count = 100.0 if k < 20 else 0.0
+                        r = 7.0 if abs(x - 12.6) < 2.0 else 6.5
+                        out.write(f"  {k + 1} {x} {count} {r if count else 0.0}\n")
+            import contextlib
+            import io
+            text = io.StringIO()
+            with contextlib.redirect_stdout(text):
+                channel_sphere.main(["radius", path, "--near", "2.0"])
+            line = text.getvalue()
+            self.assertIn("mean wall radius 6.6000", line)      # (4 x 7 + 16 x 6.5) / 20
+            self.assertIn("within 2 of x = 12.60: 7.0000", line)
+
+
+class TubeWallFactor(unittest.TestCase):
+    def test_small_sphere_limits(self):
+        # an unbounded fluid as lam -> 0; first reflection 2.105 lam (Faxen's 2.104)
+        for factor in (channel_sphere.tube_factor_quiescent, channel_sphere.tube_factor_poiseuille):
+            self.assertAlmostEqual(float(factor(0.0)), 1.0, places=14)
+            h = 1e-6
+            self.assertAlmostEqual(float((factor(h) - factor(0.0)) / h), 2.1050, places=4)
+
+    def test_poiseuille_curvature_term(self):
+        # K - K' = (2/3 lam^2 + (0.20217 - 0.75857) lam^5) / denominator: Faxen's -2/3 lam^2
+        lam = 0.01
+        diff = float(channel_sphere.tube_factor_quiescent(lam) - channel_sphere.tube_factor_poiseuille(lam))
+        self.assertAlmostEqual(diff / lam**2, 2.0 / 3.0 * (1 + 2.105 * lam), delta=1e-3)
+
+    def test_grows_with_confinement(self):
+        lam = np.linspace(0.0, 0.6, 61)
+        for factor in (channel_sphere.tube_factor_quiescent, channel_sphere.tube_factor_poiseuille):
+            self.assertTrue(np.all(np.diff(factor(lam)) > 0))
+        # the tabulated value of the series at lam = 0.2 (Haberman and Sayre)
+        self.assertAlmostEqual(float(channel_sphere.tube_factor_quiescent(0.2)), 1.680, places=3)
+
+    def test_radius_at_or_below_the_sphere_is_refused(self):
+        with self.assertRaises(SystemExit) as caught:
+            channel_sphere.main(["tube", "--d", "3", "4.5", "1.5"])
+        self.assertIn("must exceed the sphere radius", str(caught.exception.code))
+
+
 if __name__ == "__main__":
     unittest.main()
