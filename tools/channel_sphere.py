@@ -20,6 +20,7 @@ C_D = 24/Re (1 + 0.150 Re^0.681) + 0.407 / (1 + 8710/Re).
   tools/channel_sphere.py drag examples/channel-sphere/drag.U*           # table
   tools/channel_sphere.py drag --series "rigid:drag.U0.5,drag.U0.9" --series "..." --png cd.png
   tools/channel_sphere.py radius wall_radius.H2 ...                     # compliant walls
+  tools/channel_sphere.py velocity velocity_profile.H2   # centre-line velocity, hydrodynamic radius
   tools/channel_sphere.py tube 4.5 4.9         # wall factor: drag in a wider tube, same U
 
 Defaults: rho = 4 (n = 4, m = 1), d = 3, eta = 1.083 (kinetic theory of standard DPD with
@@ -343,6 +344,79 @@ def radius_command(args):
         print(f'wrote {args.png}')
 
 
+def parabola_fit(r, u, weight):
+    """Weighted least squares u = V (1 - r^2 / R_h^2): (V, R_h). R_h is where the fitted
+    Poiseuille profile reaches zero, the channel's hydrodynamic radius."""
+    design = np.column_stack([np.ones_like(r), r * r])
+    w = np.sqrt(weight)
+    (a, b), *_ = np.linalg.lstsq(design * w[:, None], u * w, rcond=None)
+    if a <= 0.0 or b >= 0.0:
+        return float(a), float('nan')
+    return float(a), float(math.sqrt(-a / b))
+
+
+def velocity_command(args):
+    """Radial profile of the fluid's x velocity (in.sphere_compliant's velocity_profile files) in
+    the slabs away from the sphere, and its Poiseuille fit over r < --fit: centre-line velocity
+    and hydrodynamic radius, each with a batch-mean error."""
+    out = []
+    for path in args.files:
+        names, blocks = read_ave_chunk(path)
+        start = int(round(args.discard * len(blocks)))
+        blocks = blocks[start:]
+        if len(blocks) < 2:
+            sys.exit(f'channel_sphere: {path} has fewer than 2 blocks after --discard')
+        radius = blocks[0, :, names.index('Coord1')]
+        axial = blocks[0, :, names.index('Coord2')]
+        count = blocks[:, :, names.index('Ncount')]
+        vx = blocks[:, :, names.index('vx')]
+        centre = 0.5 * (axial.min() + axial.max()) if args.sphere_x is None else args.sphere_x
+        span = axial.max() - axial.min() + (axial[1] - axial[0] if len(set(axial)) > 1 else 0.0)
+        far = np.abs(axial - centre) > 0.25 * span
+        if not far.any():
+            sys.exit(f'channel_sphere: {path} has no slab farther than a quarter box from the sphere')
+        rings = np.unique(radius)
+
+        def profile(rows):
+            c = count[rows][:, far]
+            m = (vx[rows][:, far] * c)
+            u = np.array([m[:, radius[far] == ring].sum() for ring in rings])
+            n = np.array([c[:, radius[far] == ring].sum() for ring in rings])
+            return np.where(n > 0, u / np.maximum(n, 1e-300), 0.0), n
+
+        u, n = profile(slice(None))
+        inside = (rings < args.fit) & (n > 0)
+        v_c, r_h = parabola_fit(rings[inside], u[inside], n[inside])
+        nb = min(args.batches, len(blocks))
+        fits = []
+        for rows in np.array_split(np.arange(len(blocks)), nb):
+            ub, nb_count = profile(rows)
+            ok = (rings < args.fit) & (nb_count > 0)
+            fits.append(parabola_fit(rings[ok], ub[ok], nb_count[ok]))
+        fits = np.array(fits)
+        err = fits.std(axis=0, ddof=1) / math.sqrt(len(fits))
+        print(f'{path}: centre-line velocity {v_c:.4f} +- {err[0]:.4f}, hydrodynamic radius '
+              f'{r_h:.3f} +- {err[1]:.3f} (Poiseuille fit over r < {args.fit:g}, slabs away from the sphere)')
+        out.append((path, rings, u, n, v_c, r_h))
+    if args.png:
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(5.5, 3.6), dpi=100)
+        for path, rings, u, n, v_c, r_h in out:
+            label = path.split('/')[-1].replace('velocity_profile.', '')
+            line, = ax.plot(rings[n > 0], u[n > 0], 'o', ms=3, label=f'{label}: R_h = {r_h:.2f}')
+            rr = np.linspace(0.0, r_h, 50)
+            ax.plot(rr, v_c * (1 - rr**2 / r_h**2), '-', color=line.get_color(), lw=0.8)
+        ax.set_xlabel('distance from the axis r')
+        ax.set_ylabel('mean fluid velocity along x')
+        ax.legend(fontsize=7)
+        ax.grid(True, alpha=0.3)
+        fig.tight_layout()
+        fig.savefig(args.png)
+        print(f'wrote {args.png}')
+
+
 def tube_command(args):
     """Haberman and Sayre's wall factors for the sphere in tubes of the given radii, and the drag
     at a fixed mean velocity relative to the first radius (Poiseuille factor)."""
@@ -397,12 +471,23 @@ def main(argv=None):
                         help='the sphere\'s x (default: the middle of the bins)')
     radius.add_argument('--each', action='store_true',
                         help='print and plot the profile of every kept block, not their mean')
+    velocity = sub.add_parser('velocity', help='radial velocity profile away from the sphere')
+    velocity.add_argument('files', nargs='+')
+    velocity.add_argument('--fit', type=float, default=3.0,
+                          help='fit the Poiseuille profile over r < this (default 3)')
+    velocity.add_argument('--discard', type=float, default=0.2)
+    velocity.add_argument('--batches', type=int, default=5)
+    velocity.add_argument('--sphere-x', type=float,
+                          help='the sphere\'s x (default: the middle of the slabs)')
+    velocity.add_argument('--png')
     tube = sub.add_parser('tube', help='wall factor of a sphere on the axis of a tube')
     tube.add_argument('radii', nargs='+', type=float, help='tube radii (the first is the reference)')
     tube.add_argument('--d', type=float, default=3.0, help='sphere diameter')
     args = parser.parse_args(argv)
     if args.command == 'tube':
         tube_command(args)
+    elif args.command == 'velocity':
+        velocity_command(args)
     elif args.command == 'drag':
         if not 0.0 <= args.discard < 1.0:
             sys.exit('channel_sphere: --discard must be in [0, 1)')

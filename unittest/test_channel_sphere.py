@@ -99,6 +99,44 @@ class WallRadius(unittest.TestCase):
             self.assertIn("within 2 of x = 12.60: 7.0000", line)
 
 
+class VelocityProfile(unittest.TestCase):
+    def test_poiseuille_fit_recovers_centre_velocity_and_radius(self):
+        # four slabs; the two far from the sphere (x = 3.15, 22.05) carry u = 1.2 (1 - r^2/25)
+        # plus noise; the near ones a flattened profile that the fit must not see
+        rng = np.random.default_rng(5)
+        rings = (np.arange(30) + 0.5) * 0.242
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "velocity_profile.x")
+            with open(path, "w") as out:
+                out.write("# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n"
+                          "# Chunk Coord1 Coord2 Ncount vx\n")
+                for block in range(20):
+                    out.write(f"{1000 * (block + 1)} 120 10000\n")
+                    k = 0
+                    for r in rings:
+                        for x in (3.15, 9.45, 15.75, 22.05):
+                            k += 1
+                            far = abs(x - 12.6) > 6.3
+                            u = 1.2 * (1 - r * r / 25.0) if far else 0.3
+                            out.write(f"  {k} {r} {x} {10 * r:.3f} {u + 0.01 * rng.standard_normal()}\n")
+            import contextlib
+            import io
+            text = io.StringIO()
+            with contextlib.redirect_stdout(text):
+                channel_sphere.main(["velocity", path])
+            words = text.getvalue().split()
+            v_c = float(words[words.index("velocity") + 1])
+            r_h = float(words[words.index("radius") + 1])
+            self.assertAlmostEqual(v_c, 1.2, delta=0.005)
+            self.assertAlmostEqual(r_h, 5.0, delta=0.02)
+
+    def test_parabola_fit_is_exact_on_a_parabola(self):
+        r = np.linspace(0.1, 3.0, 12)
+        v, rh = channel_sphere.parabola_fit(r, 0.8 * (1 - r**2 / 5.3**2), np.ones_like(r))
+        self.assertAlmostEqual(v, 0.8, places=12)
+        self.assertAlmostEqual(rh, 5.3, places=10)
+
+
 class TubeWallFactor(unittest.TestCase):
     def test_small_sphere_limits(self):
         # an unbounded fluid as lam -> 0; first reflection 2.105 lam (Faxen's 2.104)
