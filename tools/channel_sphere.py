@@ -417,6 +417,36 @@ def velocity_command(args):
         print(f'wrote {args.png}')
 
 
+def density_command(args):
+    """Number density per ring of the radial bins (velocity_profile / wall_profile files of
+    in.sphere_compliant), over the slabs away from the sphere, one column per file."""
+    table, rings = [], None
+    for path in args.files:
+        names, blocks = read_ave_chunk(path)
+        blocks = blocks[int(round(args.discard * len(blocks))):]
+        radius = blocks[0, :, names.index('Coord1')]
+        axial = blocks[0, :, names.index('Coord2')]
+        count = blocks[:, :, names.index('Ncount')].mean(axis=0)
+        slabs = np.unique(axial)
+        if len(slabs) < 2:
+            sys.exit(f'channel_sphere: {path} needs at least two slabs along the axis')
+        slab = slabs[1] - slabs[0]
+        centre = 0.5 * (slabs.min() + slabs.max())
+        far = np.abs(axial - centre) > 0.25 * slab * len(slabs)
+        these = np.unique(radius)
+        if rings is not None and (len(these) != len(rings) or np.abs(these - rings).max() > 1e-6):
+            sys.exit(f'channel_sphere: {path} has other radial bins than {args.files[0]}')
+        rings = these
+        width = rings[1] - rings[0]
+        length = slab * len(np.unique(axial[far]))
+        volume = math.pi * ((rings + 0.5 * width)**2 - (rings - 0.5 * width)**2) * length
+        table.append(np.array([count[far & (radius == q)].sum() for q in rings]) / volume)
+    keep = (rings >= args.rmin) & (rings <= args.rmax)
+    print('r       ' + ' '.join(f'{p.split("/")[-1]:>28s}' for p in args.files))
+    for k in np.nonzero(keep)[0]:
+        print(f'{rings[k]:6.3f}  ' + ' '.join(f'{col[k]:28.3f}' for col in table))
+
+
 def tube_command(args):
     """Haberman and Sayre's wall factors for the sphere in tubes of the given radii, and the drag
     at a fixed mean velocity relative to the first radius (Poiseuille factor)."""
@@ -480,6 +510,11 @@ def main(argv=None):
     velocity.add_argument('--sphere-x', type=float,
                           help='the sphere\'s x (default: the middle of the slabs)')
     velocity.add_argument('--png')
+    density = sub.add_parser('density', help='number density per ring away from the sphere')
+    density.add_argument('files', nargs='+')
+    density.add_argument('--discard', type=float, default=0.2)
+    density.add_argument('--rmin', type=float, default=0.0)
+    density.add_argument('--rmax', type=float, default=1e30)
     tube = sub.add_parser('tube', help='wall factor of a sphere on the axis of a tube')
     tube.add_argument('radii', nargs='+', type=float, help='tube radii (the first is the reference)')
     tube.add_argument('--d', type=float, default=3.0, help='sphere diameter')
@@ -488,6 +523,8 @@ def main(argv=None):
         tube_command(args)
     elif args.command == 'velocity':
         velocity_command(args)
+    elif args.command == 'density':
+        density_command(args)
     elif args.command == 'drag':
         if not 0.0 <= args.discard < 1.0:
             sys.exit('channel_sphere: --discard must be in [0, 1)')

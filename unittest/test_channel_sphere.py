@@ -130,6 +130,34 @@ class VelocityProfile(unittest.TestCase):
             self.assertAlmostEqual(v_c, 1.2, delta=0.005)
             self.assertAlmostEqual(r_h, 5.0, delta=0.02)
 
+    def test_density_per_ring(self):
+        # counts proportional to each ring's volume in the far slabs: density 4 everywhere there;
+        # the near slabs hold nothing and must not dilute it
+        rings = (np.arange(30) + 0.5) * 0.242
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "velocity_profile.x")
+            with open(path, "w") as out:
+                out.write("# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n"
+                          "# Chunk Coord1 Coord2 Ncount vx\n")
+                for block in range(5):
+                    out.write(f"{1000 * (block + 1)} 120 10000\n")
+                    k = 0
+                    for r in rings:
+                        vol = math.pi * ((r + 0.121) ** 2 - (r - 0.121) ** 2) * 6.3
+                        for x in (3.15, 9.45, 15.75, 22.05):
+                            k += 1
+                            n = 4.0 * vol if abs(x - 12.6) > 6.3 else 0.0
+                            out.write(f"  {k} {r} {x} {n} 0.0\n")
+            import contextlib
+            import io
+            text = io.StringIO()
+            with contextlib.redirect_stdout(text):
+                channel_sphere.main(["density", path])
+            values = [float(line.split()[1]) for line in text.getvalue().splitlines()[1:]]
+            self.assertEqual(len(values), 30)
+            for v in values:
+                self.assertAlmostEqual(v, 4.0, places=6)
+
     def test_parabola_fit_is_exact_on_a_parabola(self):
         r = np.linspace(0.1, 3.0, 12)
         v, rh = channel_sphere.parabola_fit(r, 0.8 * (1 - r**2 / 5.3**2), np.ones_like(r))

@@ -92,3 +92,25 @@ $PY $T radius wall_radius.colloid_rigid wall_radius.colloid_H8_rmax3_outer wall_
 echo "== compliant channel, one-particle dpd/fpm colloid (rc = 1.54, every pair dpd/fpm; section 4.4)"
 $PY $T drag --velocity v_vcore drag.fpm_rigid drag.fpm_H8_rmax3_outer
 $PY $T radius wall_radius.fpm_rigid wall_radius.fpm_H8_rmax3_outer
+echo "== compliant channel d/D = 0.33 (D = 9), outer layer anchored: four walls, two forces (section 4.5)"
+for v in v_vcore v_vcentre; do
+$PY $T drag --velocity $v drag.d33_rigid_f0.03 drag.d33_H8_f0.03 drag.d33_H2_f0.03 drag.d33_H1_f0.03 \
+    drag.d33_rigid_f0.06+drag.d33_rigid_f0.06_s2 drag.d33_H8_f0.06+drag.d33_H8_f0.06_s2 \
+    drag.d33_H2_f0.06+drag.d33_H2_f0.06_s2 drag.d33_H1_f0.06+drag.d33_H1_f0.06_s2
+done
+$PY $T drag --velocity v_vcore --series "frozen shell:drag.d33_rigid_f0.03,drag.d33_rigid_f0.06+drag.d33_rigid_f0.06_s2" \
+    --series "H=8:drag.d33_H8_f0.03,drag.d33_H8_f0.06+drag.d33_H8_f0.06_s2" \
+    --series "H=2:drag.d33_H2_f0.03,drag.d33_H2_f0.06+drag.d33_H2_f0.06_s2" \
+    --series "H=1:drag.d33_H1_f0.03,drag.d33_H1_f0.06+drag.d33_H1_f0.06_s2" \
+    --title "compliant channel d/D = 0.33, r_max = 3, outer layer anchored" --png $F/channel_sphere_cd_compliant_d33.png
+$PY $T radius --near 2.5 wall_radius.d33_rigid_f0.03 wall_radius.d33_H8_f0.03 wall_radius.d33_H2_f0.03 wall_radius.d33_H1_f0.03 \
+    wall_radius.d33_rigid_f0.06 wall_radius.d33_H8_f0.06 wall_radius.d33_H2_f0.06 wall_radius.d33_H1_f0.06 \
+    wall_radius.d33_rigid_f0.06_s2 wall_radius.d33_H8_f0.06_s2 wall_radius.d33_H2_f0.06_s2 wall_radius.d33_H1_f0.06_s2
+$PY $T velocity velocity_profile.d33_rigid_f0.03 velocity_profile.d33_H8_f0.03 velocity_profile.d33_H2_f0.03 velocity_profile.d33_H1_f0.03
+$PY $T velocity velocity_profile.d33_rigid_f0.06_s2 velocity_profile.d33_H8_f0.06_s2 velocity_profile.d33_H2_f0.06 \
+    velocity_profile.d33_H2_f0.06_s2 velocity_profile.d33_H1_f0.06_s2 --png $F/channel_sphere_velocity_d33.png
+$PY $T velocity --fit 4 velocity_profile.d33_rigid_f0.03 velocity_profile.d33_H8_f0.03 velocity_profile.d33_H2_f0.03 velocity_profile.d33_H1_f0.03 \
+    velocity_profile.d33_rigid_f0.06_s2 velocity_profile.d33_H8_f0.06_s2 velocity_profile.d33_H2_f0.06 \
+    velocity_profile.d33_H2_f0.06_s2 velocity_profile.d33_H1_f0.06_s2
+echo "== wall factor the inner layer's shift would give at a fixed centre-line velocity (tube radius D/2 + shift near the sphere)"
+$PY $T tube 4.5 4.60 4.85 4.94
