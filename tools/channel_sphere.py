@@ -215,11 +215,26 @@ def drag_command(args):
     return results
 
 
-def plot_drag(results, args):
+def new_plot(height=3.6):
+    """A figure and axes drawn without a display."""
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(5.5, 4.2), dpi=100)
+    return plt.subplots(figsize=(5.5, height), dpi=100)
+
+
+def save_plot(fig, ax, xlabel, ylabel, png, legend_size=7, which='major'):
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.legend(fontsize=legend_size)
+    ax.grid(True, which=which, alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(png)
+    print(f'wrote {png}')
+
+
+def plot_drag(results, args):
+    fig, ax = new_plot(4.2)
     res = [r['Re'] for r in results]
     grid = np.geomspace(min(res) / 1.5, max(res) * 1.5, 100)
     ax.plot(grid, correlation_cd(grid), 'k-', label='Brown & Lawler correlation')
@@ -236,15 +251,10 @@ def plot_drag(results, args):
                     fmt=markers[k % len(markers)], capsize=3, label=label or 'DPD')
     ax.set_xscale('log')
     ax.set_yscale('log')
-    ax.set_xlabel('Re = rho U d / eta')
-    ax.set_ylabel('C_D = 8 F_D / (pi d^2 rho U^2)')
     if args.title:
         ax.set_title(args.title, fontsize=10)
-    ax.legend(fontsize=8)
-    ax.grid(True, which='both', alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(args.png)
-    print(f'wrote {args.png}')
+    save_plot(fig, ax, 'Re = rho U d / eta', 'C_D = 8 F_D / (pi d^2 rho U^2)', args.png,
+              legend_size=8, which='both')
 
 
 def read_ave_chunk(path):
@@ -328,20 +338,12 @@ def radius_command(args):
         print(f'{path}: mean wall radius {overall:.4f} +- {err_text}; '
               f'min over x {mean_r.min():.4f}, max {mean_r.max():.4f}{near_text}')
     if args.png:
-        import matplotlib
-        matplotlib.use('Agg')
-        import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(5.5, 3.6), dpi=100)
+        fig, ax = new_plot()
         for path, x, mean_r, _, _ in out:
             label = path.split('/')[-1].replace('wall_radius.', '')
             ax.plot(x, mean_r, '-', label=label)
-        ax.set_xlabel('x (channel axis)')
-        ax.set_ylabel('mean radial distance of wall particles')
-        ax.legend(fontsize=8)
-        ax.grid(True, alpha=0.3)
-        fig.tight_layout()
-        fig.savefig(args.png)
-        print(f'wrote {args.png}')
+        save_plot(fig, ax, 'x (channel axis)', 'mean radial distance of wall particles', args.png,
+                  legend_size=8)
 
 
 def parabola_fit(r, u, weight):
@@ -355,27 +357,36 @@ def parabola_fit(r, u, weight):
     return float(a), float(math.sqrt(-a / b))
 
 
+def read_radial_bins(path, discard, sphere_x=None):
+    """A velocity_profile / wall_profile file of in.sphere_compliant (chunks of bin/cylinder:
+    radial bin centre Coord1, slab centre Coord2) after dropping the first --discard fraction
+    of its blocks: (names, blocks, radius per chunk, the distinct radii, mask of the chunks in
+    the slabs more than a quarter box from the sphere)."""
+    names, blocks = read_ave_chunk(path)
+    blocks = blocks[int(round(discard * len(blocks))):]
+    if len(blocks) < 2:
+        sys.exit(f'channel_sphere: {path} has fewer than 2 blocks after --discard')
+    radius = blocks[0, :, names.index('Coord1')]
+    axial = blocks[0, :, names.index('Coord2')]
+    slabs = np.unique(axial)
+    if len(slabs) < 2:
+        sys.exit(f'channel_sphere: {path} needs at least two slabs along the axis')
+    centre = 0.5 * (slabs.min() + slabs.max()) if sphere_x is None else sphere_x
+    far = np.abs(axial - centre) > 0.25 * (slabs[1] - slabs[0]) * len(slabs)
+    if not far.any():
+        sys.exit(f'channel_sphere: {path} has no slab farther than a quarter box from the sphere')
+    return names, blocks, radius, np.unique(radius), far
+
+
 def velocity_command(args):
     """Radial profile of the fluid's x velocity (in.sphere_compliant's velocity_profile files) in
     the slabs away from the sphere, and its Poiseuille fit over r < --fit: centre-line velocity
     and hydrodynamic radius, each with a batch-mean error."""
     out = []
     for path in args.files:
-        names, blocks = read_ave_chunk(path)
-        start = int(round(args.discard * len(blocks)))
-        blocks = blocks[start:]
-        if len(blocks) < 2:
-            sys.exit(f'channel_sphere: {path} has fewer than 2 blocks after --discard')
-        radius = blocks[0, :, names.index('Coord1')]
-        axial = blocks[0, :, names.index('Coord2')]
+        names, blocks, radius, rings, far = read_radial_bins(path, args.discard, args.sphere_x)
         count = blocks[:, :, names.index('Ncount')]
         vx = blocks[:, :, names.index('vx')]
-        centre = 0.5 * (axial.min() + axial.max()) if args.sphere_x is None else args.sphere_x
-        span = axial.max() - axial.min() + (axial[1] - axial[0] if len(set(axial)) > 1 else 0.0)
-        far = np.abs(axial - centre) > 0.25 * span
-        if not far.any():
-            sys.exit(f'channel_sphere: {path} has no slab farther than a quarter box from the sphere')
-        rings = np.unique(radius)
 
         def profile(rows):
             c = count[rows][:, far]
@@ -399,52 +410,43 @@ def velocity_command(args):
               f'{r_h:.3f} +- {err[1]:.3f} (Poiseuille fit over r < {args.fit:g}, slabs away from the sphere)')
         out.append((path, rings, u, n, v_c, r_h))
     if args.png:
-        import matplotlib
-        matplotlib.use('Agg')
-        import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(5.5, 3.6), dpi=100)
+        fig, ax = new_plot()
         for path, rings, u, n, v_c, r_h in out:
             label = path.split('/')[-1].replace('velocity_profile.', '')
             line, = ax.plot(rings[n > 0], u[n > 0], 'o', ms=3, label=f'{label}: R_h = {r_h:.2f}')
             rr = np.linspace(0.0, r_h, 50)
             ax.plot(rr, v_c * (1 - rr**2 / r_h**2), '-', color=line.get_color(), lw=0.8)
-        ax.set_xlabel('distance from the axis r')
-        ax.set_ylabel('mean fluid velocity along x')
-        ax.legend(fontsize=7)
-        ax.grid(True, alpha=0.3)
-        fig.tight_layout()
-        fig.savefig(args.png)
-        print(f'wrote {args.png}')
+        save_plot(fig, ax, 'distance from the axis r', 'mean fluid velocity along x', args.png)
 
 
 def density_command(args):
     """Number density per ring of the radial bins (velocity_profile / wall_profile files of
     in.sphere_compliant), over the slabs away from the sphere, one column per file."""
-    table, rings = [], None
-    for path in args.files:
-        names, blocks = read_ave_chunk(path)
-        blocks = blocks[int(round(args.discard * len(blocks))):]
-        radius = blocks[0, :, names.index('Coord1')]
-        axial = blocks[0, :, names.index('Coord2')]
+    table, rings, labels = [], None, []
+    for spec in args.files:             # LABEL=FILE names a curve of the plot
+        label, _, path = spec.rpartition('=')
+        labels.append(label or path.split('/')[-1])
+        names, blocks, radius, these, far = read_radial_bins(path, args.discard)
         count = blocks[:, :, names.index('Ncount')].mean(axis=0)
-        slabs = np.unique(axial)
-        if len(slabs) < 2:
-            sys.exit(f'channel_sphere: {path} needs at least two slabs along the axis')
-        slab = slabs[1] - slabs[0]
-        centre = 0.5 * (slabs.min() + slabs.max())
-        far = np.abs(axial - centre) > 0.25 * slab * len(slabs)
-        these = np.unique(radius)
         if rings is not None and (len(these) != len(rings) or np.abs(these - rings).max() > 1e-6):
-            sys.exit(f'channel_sphere: {path} has other radial bins than {args.files[0]}')
+            sys.exit(f'channel_sphere: {path} has other radial bins than the first file')
         rings = these
         width = rings[1] - rings[0]
-        length = slab * len(np.unique(axial[far]))
+        axial = blocks[0, :, names.index('Coord2')]
+        slabs = np.unique(axial)
+        length = (slabs[1] - slabs[0]) * len(np.unique(axial[far]))   # the far slabs' length
         volume = math.pi * ((rings + 0.5 * width)**2 - (rings - 0.5 * width)**2) * length
         table.append(np.array([count[far & (radius == q)].sum() for q in rings]) / volume)
     keep = (rings >= args.rmin) & (rings <= args.rmax)
-    print('r       ' + ' '.join(f'{p.split("/")[-1]:>28s}' for p in args.files))
+    print('r       ' + ' '.join(f'{label[-28:]:>28s}' for label in labels))
     for k in np.nonzero(keep)[0]:
         print(f'{rings[k]:6.3f}  ' + ' '.join(f'{col[k]:28.3f}' for col in table))
+    if args.png:
+        fig, ax = new_plot()
+        for label, col in zip(labels, table):
+            ax.plot(rings[keep], col[keep], '.-', label=label)
+        save_plot(fig, ax, 'distance from the axis r', 'number density (slabs away from the sphere)',
+                  args.png)
 
 
 def tube_command(args):
@@ -515,6 +517,7 @@ def main(argv=None):
     density.add_argument('--discard', type=float, default=0.2)
     density.add_argument('--rmin', type=float, default=0.0)
     density.add_argument('--rmax', type=float, default=1e30)
+    density.add_argument('--png')
     tube = sub.add_parser('tube', help='wall factor of a sphere on the axis of a tube')
     tube.add_argument('radii', nargs='+', type=float, help='tube radii (the first is the reference)')
     tube.add_argument('--d', type=float, default=3.0, help='sphere diameter')

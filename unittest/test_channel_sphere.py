@@ -89,42 +89,53 @@ class WallRadius(unittest.TestCase):
                         count = 100.0 if k < 20 else 0.0
                         r = 7.0 if abs(x - 12.6) < 2.0 else 6.5
                         out.write(f"  {k + 1} {x} {count} {r if count else 0.0}\n")
-            import contextlib
-            import io
-            text = io.StringIO()
-            with contextlib.redirect_stdout(text):
-                channel_sphere.main(["radius", path, "--near", "2.0"])
-            line = text.getvalue()
+            line = printed(["radius", path, "--near", "2.0"])
             self.assertIn("mean wall radius 6.6000", line)      # (4 x 7 + 16 x 6.5) / 20
             self.assertIn("within 2 of x = 12.60: 7.0000", line)
 
 
+SLABS = (3.15, 9.45, 15.75, 22.05)      # four slabs of 6.3; the sphere at x = 12.6
+RINGS = (np.arange(30) + 0.5) * 0.242
+
+
+def write_radial_bins(path, blocks, count_and_vx):
+    """A fix ave/chunk file of bin/cylinder chunks as in.sphere_compliant writes them (radius
+    Coord1, slab Coord2, the slab varying fastest); count_and_vx(r, x) gives one chunk's values."""
+    with open(path, "w") as out:
+        out.write("# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n"
+                  "# Chunk Coord1 Coord2 Ncount vx\n")
+        for block in range(blocks):
+            out.write(f"{1000 * (block + 1)} {len(RINGS) * len(SLABS)} 10000\n")
+            k = 0
+            for r in RINGS:
+                for x in SLABS:
+                    k += 1
+                    n, u = count_and_vx(r, x)
+                    out.write(f"  {k} {r} {x} {n} {u}\n")
+
+
+def printed(argv):
+    import contextlib
+    import io
+    text = io.StringIO()
+    with contextlib.redirect_stdout(text):
+        channel_sphere.main(argv)
+    return text.getvalue()
+
+
 class VelocityProfile(unittest.TestCase):
     def test_poiseuille_fit_recovers_centre_velocity_and_radius(self):
-        # four slabs; the two far from the sphere (x = 3.15, 22.05) carry u = 1.2 (1 - r^2/25)
-        # plus noise; the near ones a flattened profile that the fit must not see
+        # the two slabs far from the sphere carry u = 1.2 (1 - r^2/25) plus noise; the near
+        # ones a flat profile that the fit must not see
         rng = np.random.default_rng(5)
-        rings = (np.arange(30) + 0.5) * 0.242
+
+        def chunk(r, x):
+            u = 1.2 * (1 - r * r / 25.0) if abs(x - 12.6) > 6.3 else 0.3
+            return 10 * r, u + 0.01 * rng.standard_normal()
         with tempfile.TemporaryDirectory() as d:
             path = os.path.join(d, "velocity_profile.x")
-            with open(path, "w") as out:
-                out.write("# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n"
-                          "# Chunk Coord1 Coord2 Ncount vx\n")
-                for block in range(20):
-                    out.write(f"{1000 * (block + 1)} 120 10000\n")
-                    k = 0
-                    for r in rings:
-                        for x in (3.15, 9.45, 15.75, 22.05):
-                            k += 1
-                            far = abs(x - 12.6) > 6.3
-                            u = 1.2 * (1 - r * r / 25.0) if far else 0.3
-                            out.write(f"  {k} {r} {x} {10 * r:.3f} {u + 0.01 * rng.standard_normal()}\n")
-            import contextlib
-            import io
-            text = io.StringIO()
-            with contextlib.redirect_stdout(text):
-                channel_sphere.main(["velocity", path])
-            words = text.getvalue().split()
+            write_radial_bins(path, 20, chunk)
+            words = printed(["velocity", path]).split()
             v_c = float(words[words.index("velocity") + 1])
             r_h = float(words[words.index("radius") + 1])
             self.assertAlmostEqual(v_c, 1.2, delta=0.005)
@@ -133,27 +144,13 @@ class VelocityProfile(unittest.TestCase):
     def test_density_per_ring(self):
         # counts proportional to each ring's volume in the far slabs: density 4 everywhere there;
         # the near slabs hold nothing and must not dilute it
-        rings = (np.arange(30) + 0.5) * 0.242
+        def chunk(r, x):
+            volume = math.pi * ((r + 0.121) ** 2 - (r - 0.121) ** 2) * 6.3
+            return (4.0 * volume if abs(x - 12.6) > 6.3 else 0.0), 0.0
         with tempfile.TemporaryDirectory() as d:
             path = os.path.join(d, "velocity_profile.x")
-            with open(path, "w") as out:
-                out.write("# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n"
-                          "# Chunk Coord1 Coord2 Ncount vx\n")
-                for block in range(5):
-                    out.write(f"{1000 * (block + 1)} 120 10000\n")
-                    k = 0
-                    for r in rings:
-                        vol = math.pi * ((r + 0.121) ** 2 - (r - 0.121) ** 2) * 6.3
-                        for x in (3.15, 9.45, 15.75, 22.05):
-                            k += 1
-                            n = 4.0 * vol if abs(x - 12.6) > 6.3 else 0.0
-                            out.write(f"  {k} {r} {x} {n} 0.0\n")
-            import contextlib
-            import io
-            text = io.StringIO()
-            with contextlib.redirect_stdout(text):
-                channel_sphere.main(["density", path])
-            values = [float(line.split()[1]) for line in text.getvalue().splitlines()[1:]]
+            write_radial_bins(path, 5, chunk)
+            values = [float(line.split()[1]) for line in printed(["density", path]).splitlines()[1:]]
             self.assertEqual(len(values), 30)
             for v in values:
                 self.assertAlmostEqual(v, 4.0, places=6)

@@ -108,9 +108,18 @@ $PY $T radius --near 2.5 wall_radius.d33_rigid_f0.03 wall_radius.d33_H8_f0.03 wa
     wall_radius.d33_rigid_f0.06_s2 wall_radius.d33_H8_f0.06_s2 wall_radius.d33_H2_f0.06_s2 wall_radius.d33_H1_f0.06_s2
 $PY $T velocity velocity_profile.d33_rigid_f0.03 velocity_profile.d33_H8_f0.03 velocity_profile.d33_H2_f0.03 velocity_profile.d33_H1_f0.03
 $PY $T velocity velocity_profile.d33_rigid_f0.06_s2 velocity_profile.d33_H8_f0.06_s2 velocity_profile.d33_H2_f0.06 \
-    velocity_profile.d33_H2_f0.06_s2 velocity_profile.d33_H1_f0.06_s2 --png $F/channel_sphere_velocity_d33.png
-$PY $T velocity --fit 4 velocity_profile.d33_rigid_f0.03 velocity_profile.d33_H8_f0.03 velocity_profile.d33_H2_f0.03 velocity_profile.d33_H1_f0.03 \
-    velocity_profile.d33_rigid_f0.06_s2 velocity_profile.d33_H8_f0.06_s2 velocity_profile.d33_H2_f0.06 \
     velocity_profile.d33_H2_f0.06_s2 velocity_profile.d33_H1_f0.06_s2
+$PY $T velocity --fit 4 velocity_profile.d33_rigid_f0.03 velocity_profile.d33_H8_f0.03 velocity_profile.d33_H2_f0.03 velocity_profile.d33_H1_f0.03 \
+    velocity_profile.d33_H2_f0.06
+$PY $T velocity --fit 4 velocity_profile.d33_rigid_f0.06_s2 velocity_profile.d33_H8_f0.06_s2 \
+    velocity_profile.d33_H2_f0.06_s2 velocity_profile.d33_H1_f0.06_s2 --png $F/channel_sphere_velocity_d33.png
 echo "== wall factor the inner layer's shift would give at a fixed centre-line velocity (tube radius D/2 + shift near the sphere)"
 $PY $T tube 4.5 4.60 4.85 4.94
+echo "== number density of wall and fluid particles per ring, slabs away from the sphere (seed 3001 runs, force 0.06)"
+$PY $T density --rmin 3.5 --rmax 6.5 "wall, frozen shell=wall_profile.d33_rigid_f0.06_s2" "wall, H = 8=wall_profile.d33_H8_f0.06_s2" \
+    "wall, H = 2=wall_profile.d33_H2_f0.06_s2" "wall, H = 1=wall_profile.d33_H1_f0.06_s2"
+$PY $T density --rmin 3.5 --rmax 6.5 "fluid, frozen shell=velocity_profile.d33_rigid_f0.06_s2" "fluid, H = 8=velocity_profile.d33_H8_f0.06_s2" \
+    "fluid, H = 2=velocity_profile.d33_H2_f0.06_s2" "fluid, H = 1=velocity_profile.d33_H1_f0.06_s2"
+$PY $T density --rmin 3 --rmax 6.5 "wall, frozen shell=wall_profile.d33_rigid_f0.06_s2" "wall, H = 1=wall_profile.d33_H1_f0.06_s2" \
+    "fluid, frozen shell=velocity_profile.d33_rigid_f0.06_s2" "fluid, H = 1=velocity_profile.d33_H1_f0.06_s2" \
+    --png $F/channel_sphere_density_d33.png
