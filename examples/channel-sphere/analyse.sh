@@ -123,3 +123,15 @@ $PY $T density --rmin 3.5 --rmax 6.5 "fluid, frozen shell=velocity_profile.d33_r
 $PY $T density --rmin 3 --rmax 6.5 "wall, frozen shell=wall_profile.d33_rigid_f0.06_s2" "wall, H = 1=wall_profile.d33_H1_f0.06_s2" \
     "fluid, frozen shell=velocity_profile.d33_rigid_f0.06_s2" "fluid, H = 1=velocity_profile.d33_H1_f0.06_s2" \
     --png $F/channel_sphere_density_d33.png
+echo "== d/D = 0.33, wall particles repelling like fluid (a_fw = a_wall = 18.75), force 0.06 (section 4.5)"
+for v in v_vcore v_vcentre; do
+$PY $T drag --velocity $v drag.d33_alike_rigid_f0.06 drag.d33_alike_H1_f0.06
+done
+$PY $T radius --near 2.5 wall_radius.d33_alike_rigid_f0.06 wall_radius.d33_alike_H1_f0.06
+$PY $T velocity --fit 4 velocity_profile.d33_alike_rigid_f0.06 velocity_profile.d33_alike_H1_f0.06
+$PY $T density --rmin 3.5 --rmax 6.5 "wall, frozen=wall_profile.d33_alike_rigid_f0.06" "wall, H = 1=wall_profile.d33_alike_H1_f0.06" \
+    "fluid, frozen=velocity_profile.d33_alike_rigid_f0.06" "fluid, H = 1=velocity_profile.d33_alike_H1_f0.06"
+for f in drag.d33_alike_rigid_f0.06 drag.d33_alike_H1_f0.06; do
+    echo "$f:"; awk '!/^#/ && $1 % 2000 == 0 {printf "  %d %.3f %.0f\n", $1, $13, $12}' $f
+done
+$PY $T tube 4.5 4.69
