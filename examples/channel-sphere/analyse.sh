@@ -135,3 +135,10 @@ for f in drag.d33_alike_rigid_f0.06 drag.d33_alike_H1_f0.06; do
     echo "$f:"; awk '!/^#/ && $1 % 2000 == 0 {printf "  %d %.3f %.0f\n", $1, $13, $12}' $f
 done
 $PY $T tube 4.5 4.69
+echo "== d/D = 0.33, H = 8, r_max = 1.02 against r_max = 3, force 0.06, two seeds pooled (section 4.5)"
+for v in v_vcore v_vcentre; do
+$PY $T drag --velocity $v drag.d33_H8_rmax1.02_f0.06+drag.d33_H8_rmax1.02_f0.06_s2 drag.d33_H8_f0.06+drag.d33_H8_f0.06_s2
+done
+$PY $T radius --near 2.5 wall_radius.d33_H8_rmax1.02_f0.06 wall_radius.d33_H8_rmax1.02_f0.06_s2
+$PY $T velocity --fit 4 velocity_profile.d33_H8_rmax1.02_f0.06 velocity_profile.d33_H8_rmax1.02_f0.06_s2
+$PY $T density --rmin 3.7 --rmax 6.2 "wall, r_max 1.02=wall_profile.d33_H8_rmax1.02_f0.06_s2" "wall, r_max 3=wall_profile.d33_H8_f0.06_s2"
