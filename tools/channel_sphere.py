@@ -382,6 +382,10 @@ def velocity_command(args):
     """Radial profile of the fluid's x velocity (in.sphere_compliant's velocity_profile files) in
     the slabs away from the sphere, and its Poiseuille fit over r < --fit: centre-line velocity
     and hydrodynamic radius, each with a batch-mean error."""
+    if args.fit <= 0.0:
+        sys.exit('channel_sphere: velocity --fit must be positive')
+    if args.batches < 2:
+        sys.exit('channel_sphere: velocity --batches must be at least 2')
     out = []
     for path in args.files:
         names, blocks, radius, rings, far = read_radial_bins(path, args.discard, args.sphere_x)
@@ -397,6 +401,8 @@ def velocity_command(args):
 
         u, n = profile(slice(None))
         inside = (rings < args.fit) & (n > 0)
+        if inside.sum() < 3:
+            sys.exit(f'channel_sphere: fewer than 3 radial bins of {path} hold fluid inside --fit {args.fit}')
         v_c, r_h = parabola_fit(rings[inside], u[inside], n[inside])
         nb = min(args.batches, len(blocks))
         fits = []
@@ -522,6 +528,8 @@ def main(argv=None):
     tube.add_argument('radii', nargs='+', type=float, help='tube radii (the first is the reference)')
     tube.add_argument('--d', type=float, default=3.0, help='sphere diameter')
     args = parser.parse_args(argv)
+    if not 0.0 <= getattr(args, 'discard', 0.0) < 1.0:     # every subcommand but tube has one
+        sys.exit('channel_sphere: --discard must be in [0, 1)')
     if args.command == 'tube':
         tube_command(args)
     elif args.command == 'velocity':
@@ -529,8 +537,6 @@ def main(argv=None):
     elif args.command == 'density':
         density_command(args)
     elif args.command == 'drag':
-        if not 0.0 <= args.discard < 1.0:
-            sys.exit('channel_sphere: --discard must be in [0, 1)')
         drag_command(args)
     else:
         radius_command(args)

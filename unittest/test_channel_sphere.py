@@ -155,6 +155,18 @@ class VelocityProfile(unittest.TestCase):
             for v in values:
                 self.assertAlmostEqual(v, 4.0, places=6)
 
+    def test_bad_options_are_refused(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "velocity_profile.x")
+            write_radial_bins(path, 5, lambda r, x: (10.0, 1.0 - r * r / 25.0))
+            for argv, message in ((["--fit", "0"], "--fit must be positive"),
+                                  (["--fit", "0.3"], "fewer than 3 radial bins"),
+                                  (["--batches", "1"], "--batches must be at least 2"),
+                                  (["--discard", "1.0"], "--discard must be in [0, 1)")):
+                with self.assertRaises(SystemExit) as caught:
+                    channel_sphere.main(["velocity", path] + argv)
+                self.assertIn(message, str(caught.exception.code))
+
     def test_parabola_fit_is_exact_on_a_parabola(self):
         r = np.linspace(0.1, 3.0, 12)
         v, rh = channel_sphere.parabola_fit(r, 0.8 * (1 - r**2 / 5.3**2), np.ones_like(r))
