@@ -98,17 +98,17 @@ SLABS = (3.15, 9.45, 15.75, 22.05)      # four slabs of 6.3; the sphere at x = 1
 RINGS = (np.arange(30) + 0.5) * 0.242
 
 
-def write_radial_bins(path, blocks, count_and_vx):
+def write_radial_bins(path, blocks, count_and_vx, rings=RINGS, slabs=SLABS):
     """A fix ave/chunk file of bin/cylinder chunks as in.sphere_compliant writes them (radius
     Coord1, slab Coord2, the slab varying fastest); count_and_vx(r, x) gives one chunk's values."""
     with open(path, "w") as out:
         out.write("# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n"
                   "# Chunk Coord1 Coord2 Ncount vx\n")
         for block in range(blocks):
-            out.write(f"{1000 * (block + 1)} {len(RINGS) * len(SLABS)} 10000\n")
+            out.write(f"{1000 * (block + 1)} {len(rings) * len(slabs)} 10000\n")
             k = 0
-            for r in RINGS:
-                for x in SLABS:
+            for r in rings:
+                for x in slabs:
                     k += 1
                     n, u = count_and_vx(r, x)
                     out.write(f"  {k} {r} {x} {n} {u}\n")
@@ -165,6 +165,25 @@ class VelocityProfile(unittest.TestCase):
                                   (["--discard", "1.0"], "--discard must be in [0, 1)")):
                 with self.assertRaises(SystemExit) as caught:
                     channel_sphere.main(["velocity", path] + argv)
+                self.assertIn(message, str(caught.exception.code))
+
+    def test_unusable_profile_files_are_refused(self):
+        with tempfile.TemporaryDirectory() as d:
+            def written(name, blocks=5, **bins):
+                path = os.path.join(d, name)
+                write_radial_bins(path, blocks, lambda r, x: (10.0, 1.0), **bins)
+                return path
+            one_block = written("one_block", blocks=1)
+            one_slab = written("one_slab", slabs=(12.6,))
+            two_slabs = written("two_slabs", slabs=(9.45, 15.75))    # both next to the sphere
+            coarse = written("coarse", rings=(np.arange(20) + 0.5) * 0.3)
+            fine = written("fine")
+            for argv, message in ((["velocity", one_block], "fewer than 2 blocks"),
+                                  (["velocity", one_slab], "at least two slabs"),
+                                  (["density", two_slabs], "no slab farther than a quarter box"),
+                                  (["density", fine, coarse], "other radial bins")):
+                with self.assertRaises(SystemExit) as caught:
+                    channel_sphere.main(argv)
                 self.assertIn(message, str(caught.exception.code))
 
     def test_parabola_fit_is_exact_on_a_parabola(self):
