@@ -13,6 +13,10 @@ groups the rest into --batches batch means and takes the standard error over the
   Re   = rho U d / eta,    C_D = 8 F_D / (pi d^2 rho U^2)
   a_eff = F_D / (6 pi eta U): the Stokes radius (d/2 when the drag is Stokes' law; C_D = 24/Re
          then)
+  a_h  = with --slit L or --tube R: the radius of the solid sphere whose Stokes drag in that
+         channel equals F_D (Faxen's midway factor for walls L from the centre; Haberman and
+         Sayre's for the axis of a Poiseuille flow in a tube of radius R, centre-line velocity
+         2 U, or U with --centre-line): a_eff with the wall factor taken out
 
 against Stokes (24/Re) and Brown and Lawler's correlation
 C_D = 24/Re (1 + 0.150 Re^0.681) + 0.407 / (1 + 8710/Re).
@@ -22,6 +26,7 @@ C_D = 24/Re (1 + 0.150 Re^0.681) + 0.407 / (1 + 8710/Re).
   tools/channel_sphere.py radius wall_radius.H2 ...                     # compliant walls
   tools/channel_sphere.py velocity velocity_profile.H2   # centre-line velocity, hydrodynamic radius
   tools/channel_sphere.py tube 4.5 4.9         # wall factor: drag in a wider tube, same U
+  tools/channel_sphere.py drag --slit 6.3 drag.U0.9     # a_h: the wall factor taken out
 
 Defaults: rho = 4 (n = 4, m = 1), d = 3, eta = 1.083 (kinetic theory of standard DPD with
 a = 18.75, gamma = 4.5, kBT = 1, n = 4, rc = 1: 0.796 kinetic + 0.287 dissipative).
@@ -61,6 +66,53 @@ def tube_factor_poiseuille(lam):
     correction for the curvature of the profile; the mean velocity is V/2."""
     lam = np.asarray(lam, dtype=float)
     return (1.0 - 2.0 / 3.0 * lam**2 - 0.20217 * lam**5) / _tube_denominator(lam)
+
+
+def slit_factor_midway(lam):
+    """Faxen's wall factor K for a sphere of radius a moving parallel to, and midway between,
+    two plane walls a distance l from its centre, fluid at rest (lam = a / l):
+    drag = 6 pi eta a U K."""
+    lam = np.asarray(lam, dtype=float)
+    return 1.0 / (1.0 - 1.004 * lam + 0.418 * lam**3 + 0.21 * lam**4 - 0.169 * lam**5)
+
+
+# the largest a / l at which each series is used: beyond it the truncated series are not
+# trusted (Faxen's midway series to about 0.5, Haberman and Sayre's to about 0.8)
+SLIT_LAMBDA_MAX = 0.5
+TUBE_LAMBDA_MAX = 0.8
+
+
+def hydrodynamic_radius(a_eff, factor, length, lam_max):
+    """The radius a of the solid sphere whose confined Stokes drag a * factor(a / length) equals
+    a_eff * (6 pi eta U); None when no a with a / length <= lam_max gives it."""
+    from scipy.optimize import brentq
+    drag_radius = lambda a: a * float(factor(a / length)) - a_eff
+    upper = lam_max * length
+    if a_eff <= 0.0 or drag_radius(upper) < 0.0:
+        return None
+    return brentq(drag_radius, 0.0, upper, xtol=1e-12)
+
+
+def confined_radius(result, args):
+    """The hydrodynamic radius a_h of the sphere and its error: a_eff with the wall factor of
+    the channel taken out (--slit: walls moving with the stream, i.e. a sphere moving between
+    walls at rest; --tube: a sphere held on the axis of a no-slip Poiseuille flow whose
+    centre-line velocity is twice the mean U, or the reference velocity itself with
+    --centre-line)."""
+    if args.slit is not None:
+        factor, length, lam_max, scale = slit_factor_midway, args.slit, SLIT_LAMBDA_MAX, 1.0
+    else:
+        factor, length, lam_max = tube_factor_poiseuille, args.tube, TUBE_LAMBDA_MAX
+        scale = 1.0 if args.centre_line else 0.5    # a_eff per unit centre-line velocity
+    a_eff, err = scale * result['a_eff'], scale * result['a_eff_err']
+    centre = hydrodynamic_radius(a_eff, factor, length, lam_max)
+    if centre is None:
+        return None, None
+    low = hydrodynamic_radius(a_eff - err, factor, length, lam_max) if err < a_eff else 0.0
+    high = hydrodynamic_radius(a_eff + err, factor, length, lam_max)
+    if high is None:
+        return centre, centre - low
+    return centre, 0.5 * (high - low)
 
 
 def read_ave_time(path):
@@ -191,11 +243,26 @@ def drag_command(args):
         series.append(('', args.files))
     if not series:
         sys.exit('channel_sphere: give drag files or --series label:file,file')
+    confined = getattr(args, 'slit', None) is not None or getattr(args, 'tube', None) is not None
+    if getattr(args, 'slit', None) is not None and getattr(args, 'tube', None) is not None:
+        sys.exit('channel_sphere: drag takes --slit or --tube, not both')
+    for name in ('slit', 'tube'):
+        length = getattr(args, name, None)
+        if length is not None and length <= 0.0:
+            sys.exit(f'channel_sphere: drag --{name} must be positive, not {length}')
+    if getattr(args, 'centre_line', False) and getattr(args, 'tube', None) is None:
+        sys.exit('channel_sphere: drag --centre-line needs --tube')
     results = []
     print(f'# rho {args.rho} d {args.d} eta {args.eta}; discard {args.discard}, '
           f'{args.batches} batches; errors are one standard error')
+    if confined:
+        where = (f'midway between walls {args.slit} from its centre (Faxen)' if args.slit is not None
+                 else f'on the axis of a tube of radius {args.tube}, Poiseuille flow with centre-line '
+                      f'velocity {"U" if args.centre_line else "2 U"} (Haberman and Sayre)')
+        print(f'# a_h: radius of the solid sphere with the same Stokes drag {where}')
     print(f'{"series":>10} {"file":>28} {"U":>14} {"Re":>13} {"F_D":>14} {"F_total":>14} '
-          f'{"C_D":>14} {"corr.":>6} {"C_D/corr":>8} {"24/Re":>6} {"a_eff":>12}')
+          f'{"C_D":>14} {"corr.":>6} {"C_D/corr":>8} {"24/Re":>6} {"a_eff":>12}'
+          + (f' {"a_h":>12}' if confined else ''))
     for label, files in series:
         for path in files:
             r = analyse_pooled(path, args)
@@ -206,7 +273,12 @@ def drag_command(args):
                   f'{r["F_total"]:7.3f}+-{r["F_total_err"]:5.3f} '
                   f'{r["C_D"]:7.3f}+-{r["C_D_err"]:5.3f} {r["C_D_correlation"]:6.3f} '
                   f'{r["C_D"] / r["C_D_correlation"]:8.3f} {r["C_D_stokes"]:6.3f} '
-                  f'{r["a_eff"]:5.3f}+-{r["a_eff_err"]:.3f}')
+                  f'{r["a_eff"]:5.3f}+-{r["a_eff_err"]:.3f}', end='')
+            if confined:
+                r['a_h'], r['a_h_err'] = confined_radius(r, args)
+                print(f' {r["a_h"]:5.3f}+-{r["a_h_err"]:.3f}' if r['a_h'] is not None
+                      else '   beyond the wall factor\'s range', end='')
+            print()
     if args.json:
         with open(args.json, 'w') as f:
             json.dump(results, f, indent=1)
@@ -495,6 +567,15 @@ def main(argv=None):
     drag.add_argument('--discard', type=float, default=0.2,
                       help='fraction of the rows dropped at the start')
     drag.add_argument('--batches', type=int, default=10)
+    drag.add_argument('--slit', type=float,
+                      help='also a_h, the Stokes radius with the wall factor of two plane walls '
+                           'this far from the sphere\'s centre taken out (in.sphere_shear)')
+    drag.add_argument('--tube', type=float,
+                      help='also a_h for a sphere on the axis of a tube of this radius in '
+                           'Poiseuille flow (in.sphere_cylinder)')
+    drag.add_argument('--centre-line', action='store_true',
+                      help='with --tube: the reference velocity is the centre-line velocity, '
+                           'not the mean')
     drag.add_argument('--png')
     drag.add_argument('--title')
     drag.add_argument('--json')

@@ -220,5 +220,83 @@ class TubeWallFactor(unittest.TestCase):
         self.assertIn("must exceed the sphere radius", str(caught.exception.code))
 
 
+class ConfinedRadius(unittest.TestCase):
+    """a_h: the Stokes radius with the channel's wall factor taken out."""
+
+    def setUp(self):
+        self.dir = tempfile.TemporaryDirectory()
+        self.path = lambda name: os.path.join(self.dir.name, name)
+
+    def tearDown(self):
+        self.dir.cleanup()
+
+    def drag_of(self, path, **kw):
+        args = options(series=None, files=[path], json=None, png=None, slit=None, tube=None,
+                       centre_line=False)
+        for key, value in kw.items():
+            setattr(args, key, value)
+        import contextlib
+        import io
+        with contextlib.redirect_stdout(io.StringIO()):
+            return channel_sphere.drag_command(args)[0]
+
+    def test_slit_factor_limits(self):
+        # an unbounded fluid as lam -> 0, Faxen's first reflection 1.004 lam, growing with lam
+        self.assertAlmostEqual(float(channel_sphere.slit_factor_midway(0.0)), 1.0, places=14)
+        h = 1e-6
+        slope = float((channel_sphere.slit_factor_midway(h) - 1.0) / h)
+        self.assertAlmostEqual(slope, 1.004, places=4)
+        lam = np.linspace(0.0, channel_sphere.SLIT_LAMBDA_MAX, 51)
+        self.assertTrue(np.all(np.diff(channel_sphere.slit_factor_midway(lam)) > 0))
+        # the higher reflections (+0.418 lam^3 ...) lower it slightly below the first one
+        # summed geometrically, 1 / (1 - 1.004 lam), and keep it above 1 + 1.004 lam
+        k = float(channel_sphere.slit_factor_midway(0.25))
+        self.assertTrue(1.0 + 1.004 * 0.25 < k < 1.0 / (1.0 - 1.004 * 0.25))
+
+    def test_recovers_the_radius_of_a_confined_solid_sphere(self):
+        eta, u, a = 1.083, 0.5, 1.2
+        # between walls 6.3 from the centre: F = 6 pi eta a U K(a / 6.3)
+        slit_drag = 6 * math.pi * eta * a * u * float(channel_sphere.slit_factor_midway(a / 6.3))
+        write_drag(self.path("slit"), slit_drag, u, noise=0.0)
+        r = self.drag_of(self.path("slit"), slit=6.3)
+        self.assertAlmostEqual(r["a_h"], a, places=9)
+        self.assertGreater(r["a_eff"], 1.05 * a)      # the walls raise the plain Stokes radius
+        # on the axis of a tube of radius 4.5 in Poiseuille flow of mean U: centre line 2 U
+        tube_drag = 6 * math.pi * eta * a * 2 * u * float(channel_sphere.tube_factor_poiseuille(a / 4.5))
+        write_drag(self.path("tube"), tube_drag, u, noise=0.0)
+        self.assertAlmostEqual(self.drag_of(self.path("tube"), tube=4.5)["a_h"], a, places=9)
+        # read with --centre-line, the same velocity column is taken as the centre line (half
+        # the true one), so the same drag needs twice the a K'(a / R): a larger sphere
+        larger = self.drag_of(self.path("tube"), tube=4.5, centre_line=True)["a_h"]
+        kp = channel_sphere.tube_factor_poiseuille
+        self.assertAlmostEqual(larger * float(kp(larger / 4.5)), 2 * a * float(kp(a / 4.5)), places=9)
+        self.assertGreater(larger, 1.3 * a)
+
+    def test_error_follows_the_drag_error(self):
+        write_drag(self.path("noisy"), 20.0, 0.7, noise=3.0)
+        r = self.drag_of(self.path("noisy"), slit=6.3)
+        # d a_h / d a_eff = 1 / (K + lam K'(lam)) < 1: the error shrinks but stays positive
+        self.assertGreater(r["a_h_err"], 0.5 * r["a_eff_err"])
+        self.assertLess(r["a_h_err"], r["a_eff_err"])
+
+    def test_beyond_the_factor_range_is_said(self):
+        # a Stokes radius larger than any sphere that fits between the walls
+        write_drag(self.path("big"), 6 * math.pi * 1.083 * 10.0 * 0.5, 0.5, noise=0.0)
+        self.assertIsNone(self.drag_of(self.path("big"), slit=6.3)["a_h"])
+        self.assertIn("beyond the wall factor's range", printed(["drag", "--slit", "6.3", self.path("big")]))
+
+    def test_bad_options_are_refused(self):
+        write_drag(self.path("a"), 20.0, 0.7)
+        for argv, message in [
+                (["--slit", "6.3", "--tube", "4.5"], "--slit or --tube, not both"),
+                (["--slit", "0"], "--slit must be positive"),
+                (["--tube", "-4.5"], "--tube must be positive"),
+                (["--centre-line"], "--centre-line needs --tube"),
+                (["--slit", "6.3", "--centre-line"], "--centre-line needs --tube")]:
+            with self.assertRaises(SystemExit) as caught:
+                channel_sphere.main(["drag", *argv, self.path("a")])
+            self.assertIn(message, str(caught.exception.code))
+
+
 if __name__ == "__main__":
     unittest.main()
