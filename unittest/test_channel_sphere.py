@@ -35,7 +35,9 @@ def options(**kw):
     return args
 
 
-class Drag(unittest.TestCase):
+class InTempDir(unittest.TestCase):
+    """A test whose files live in a fresh temporary directory: self.path(name)."""
+
     def setUp(self):
         self.dir = tempfile.TemporaryDirectory()
         self.path = lambda name: os.path.join(self.dir.name, name)
@@ -43,6 +45,8 @@ class Drag(unittest.TestCase):
     def tearDown(self):
         self.dir.cleanup()
 
+
+class Drag(InTempDir):
     def test_stokes_drag_gives_24_over_re(self):
         # F = 3 pi eta d U exactly: C_D = 24/Re and a_eff = d/2
         u = 0.5
@@ -220,15 +224,8 @@ class TubeWallFactor(unittest.TestCase):
         self.assertIn("must exceed the sphere radius", str(caught.exception.code))
 
 
-class ConfinedRadius(unittest.TestCase):
+class ConfinedRadius(InTempDir):
     """a_h: the Stokes radius with the channel's wall factor taken out."""
-
-    def setUp(self):
-        self.dir = tempfile.TemporaryDirectory()
-        self.path = lambda name: os.path.join(self.dir.name, name)
-
-    def tearDown(self):
-        self.dir.cleanup()
 
     def drag_of(self, path, **kw):
         args = options(series=None, files=[path], json=None, png=None, slit=None, tube=None,
