@@ -7,7 +7,7 @@ T=../../tools/channel_sphere.py
 F=../../doc/figures
 echo "== shear flow, 56-particle sphere and one-particle colloid (U = mean fluid velocity)"
 $PY $T drag --series "56 particles:drag.U0.15,drag.U0.25,drag.U0.5,drag.U0.9" \
-    --series "56 particles, paper's box:drag.U0.9_full" --series "56 particles, paper's length:drag.U0.9_nx120" \
+    --series "56 particles, paper's box:drag.U0.9_full" --series "56 particles, paper's length:drag.U0.5_nx120,drag.U0.9_nx120" \
     --series "56 particles, a_sphere 18.75:drag.U0.9_a18.75" \
     --series "1 particle, rcC 1.5:drag.colloid_U0.9" --series "1 particle, rcC 1.22:drag.colloid_U0.9_rc1.22" \
     --series "1 particle, rcC 1.1:drag.colloid_U0.9_rc1.1" \
@@ -16,7 +16,7 @@ $PY $T drag --series "56 particles:drag.U0.15,drag.U0.25,drag.U0.5,drag.U0.9" \
     --title "sphere between moving walls (reduced box and paper's box)" \
     --png $F/channel_sphere_cd_shear.png
 echo "== the same, total force instead of the conservative + dissipative part"
-$PY $T drag --force total drag.U0.15 drag.U0.25 drag.U0.5 drag.U0.9 drag.U0.9_full drag.U0.9_nx120 drag.U0.9_a18.75 drag.colloid_U0.9 drag.colloid_U0.9_rc1.22 drag.colloid_U0.9_rc1.22_full drag.colloid_U0.9_rc1.1 drag.colloid_fpm_U0.9_rc1.54
+$PY $T drag --force total drag.U0.15 drag.U0.25 drag.U0.5 drag.U0.9 drag.U0.9_full drag.U0.9_nx120 drag.U0.5_nx120 drag.U0.9_a18.75 drag.colloid_U0.9 drag.colloid_U0.9_rc1.22 drag.colloid_U0.9_rc1.22_full drag.colloid_U0.9_rc1.1 drag.colloid_fpm_U0.9_rc1.54
 echo "== dpd/fpm colloid calibration runs (2,000 steps after 500; 5 batches)"
 $PY $T drag --discard 0.15 --batches 5 drag.colloid_fpm_cal_rc1.8_a200 drag.colloid_fpm_cal_rc1.5_a200
 echo "== rigid cylindrical channel, body force (U = mean fluid velocity)"
@@ -31,7 +31,7 @@ echo "== rigid pipes, one-particle dpd/fpm colloid (rc = 1.54, every pair dpd/fp
 $PY $T drag drag.D15.75_f0.032_fpm_rc1.54 drag.D12_f0.054_fpm_rc1.54 drag.D9_f0.09_fpm_rc1.54
 echo "== the sphere's hydrodynamic radius a_h: the Stokes radius with the wall factor taken out (section 3.3)"
 echo "-- free flow: Faxen's factor midway between walls 6.3 from the centre"
-$PY $T drag --slit 6.3 drag.U0.15 drag.U0.25 drag.U0.5 drag.U0.9 drag.U0.9_a18.75 drag.U0.9_full drag.U0.9_nx120 \
+$PY $T drag --slit 6.3 drag.U0.15 drag.U0.25 drag.U0.5 drag.U0.9 drag.U0.9_a18.75 drag.U0.9_full drag.U0.9_nx120 drag.U0.5_nx120 \
     drag.colloid_U0.9_rc1.22 drag.colloid_U0.9_rc1.22_full drag.colloid_fpm_U0.9_rc1.54
 echo "-- pipes: Haberman and Sayre's factor for Poiseuille flow, centre-line velocity 2 U, tube radius D/2"
 $PY $T drag --tube 7.875 drag.D15.75_f0.016 drag.D15.75_f0.032 drag.D15.75_f0.032_colloid_rc1.22 drag.D15.75_f0.032_fpm_rc1.54
