@@ -243,15 +243,14 @@ def drag_command(args):
         series.append(('', args.files))
     if not series:
         sys.exit('channel_sphere: give drag files or --series label:file,file')
-    confined = getattr(args, 'slit', None) is not None or getattr(args, 'tube', None) is not None
-    if getattr(args, 'slit', None) is not None and getattr(args, 'tube', None) is not None:
+    if args.slit is not None and args.tube is not None:
         sys.exit('channel_sphere: drag takes --slit or --tube, not both')
-    for name in ('slit', 'tube'):
-        length = getattr(args, name, None)
+    for name, length in (('slit', args.slit), ('tube', args.tube)):
         if length is not None and length <= 0.0:
             sys.exit(f'channel_sphere: drag --{name} must be positive, not {length}')
-    if getattr(args, 'centre_line', False) and getattr(args, 'tube', None) is None:
+    if args.centre_line and args.tube is None:
         sys.exit('channel_sphere: drag --centre-line needs --tube')
+    confined = args.slit is not None or args.tube is not None
     results = []
     print(f'# rho {args.rho} d {args.d} eta {args.eta}; discard {args.discard}, '
           f'{args.batches} batches; errors are one standard error')
@@ -433,7 +432,7 @@ def read_radial_bins(path, discard, sphere_x=None):
     """A velocity_profile / wall_profile file of in.sphere_compliant (chunks of bin/cylinder:
     radial bin centre Coord1, slab centre Coord2) after dropping the first --discard fraction
     of its blocks: (names, blocks, radius per chunk, the distinct radii, mask of the chunks in
-    the slabs more than a quarter box from the sphere)."""
+    the slabs more than a quarter box from the sphere, total length of those slabs)."""
     names, blocks = read_ave_chunk(path)
     blocks = blocks[int(round(discard * len(blocks))):]
     if len(blocks) < 2:
@@ -447,7 +446,8 @@ def read_radial_bins(path, discard, sphere_x=None):
     far = np.abs(axial - centre) > 0.25 * (slabs[1] - slabs[0]) * len(slabs)
     if not far.any():
         sys.exit(f'channel_sphere: {path} has no slab farther than a quarter box from the sphere')
-    return names, blocks, radius, np.unique(radius), far
+    far_length = (slabs[1] - slabs[0]) * len(np.unique(axial[far]))
+    return names, blocks, radius, np.unique(radius), far, far_length
 
 
 def velocity_command(args):
@@ -460,7 +460,7 @@ def velocity_command(args):
         sys.exit('channel_sphere: velocity --batches must be at least 2')
     out = []
     for path in args.files:
-        names, blocks, radius, rings, far = read_radial_bins(path, args.discard, args.sphere_x)
+        names, blocks, radius, rings, far, _ = read_radial_bins(path, args.discard, args.sphere_x)
         count = blocks[:, :, names.index('Ncount')]
         vx = blocks[:, :, names.index('vx')]
 
@@ -504,15 +504,12 @@ def density_command(args):
     for spec in args.files:             # LABEL=FILE names a curve of the plot
         label, _, path = spec.rpartition('=')
         labels.append(label or path.split('/')[-1])
-        names, blocks, radius, these, far = read_radial_bins(path, args.discard)
+        names, blocks, radius, these, far, length = read_radial_bins(path, args.discard)
         count = blocks[:, :, names.index('Ncount')].mean(axis=0)
         if rings is not None and (len(these) != len(rings) or np.abs(these - rings).max() > 1e-6):
             sys.exit(f'channel_sphere: {path} has other radial bins than the first file')
         rings = these
         width = rings[1] - rings[0]
-        axial = blocks[0, :, names.index('Coord2')]
-        slabs = np.unique(axial)
-        length = (slabs[1] - slabs[0]) * len(np.unique(axial[far]))   # the far slabs' length
         volume = math.pi * ((rings + 0.5 * width)**2 - (rings - 0.5 * width)**2) * length
         table.append(np.array([count[far & (radius == q)].sum() for q in rings]) / volume)
     keep = (rings >= args.rmin) & (rings <= args.rmax)
@@ -548,7 +545,10 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest='command', required=True)
-    drag = sub.add_parser('drag', help='Re and C_D from drag files')
+    start_up = argparse.ArgumentParser(add_help=False)     # every subcommand but tube
+    start_up.add_argument('--discard', type=float, default=0.2,
+                          help='fraction of the rows (blocks) dropped at the start')
+    drag = sub.add_parser('drag', parents=[start_up], help='Re and C_D from drag files')
     drag.add_argument('files', nargs='*',
                       help='drag files; FILE1+FILE2 pools independent runs of one case')
     drag.add_argument('--series', action='append', help='label:file1,file2,... (file1a+file1b pools runs)')
@@ -564,8 +564,6 @@ def main(argv=None):
     drag.add_argument('--force', choices=['split', 'total'], default='split',
                       help='drag estimator: conservative + dissipative part (default, when the '
                            'file has the split) or the total force')
-    drag.add_argument('--discard', type=float, default=0.2,
-                      help='fraction of the rows dropped at the start')
     drag.add_argument('--batches', type=int, default=10)
     drag.add_argument('--slit', type=float,
                       help='also a_h, the Stokes radius with the wall factor of two plane walls '
@@ -579,9 +577,8 @@ def main(argv=None):
     drag.add_argument('--png')
     drag.add_argument('--title')
     drag.add_argument('--json')
-    radius = sub.add_parser('radius', help='mean wall radius along the axis')
+    radius = sub.add_parser('radius', parents=[start_up], help='mean wall radius along the axis')
     radius.add_argument('files', nargs='+')
-    radius.add_argument('--discard', type=float, default=0.2)
     radius.add_argument('--batches', type=int, default=10)
     radius.add_argument('--png')
     radius.add_argument('--near', type=float,
@@ -590,18 +587,18 @@ def main(argv=None):
                         help='the sphere\'s x (default: the middle of the bins)')
     radius.add_argument('--each', action='store_true',
                         help='print and plot the profile of every kept block, not their mean')
-    velocity = sub.add_parser('velocity', help='radial velocity profile away from the sphere')
+    velocity = sub.add_parser('velocity', parents=[start_up],
+                              help='radial velocity profile away from the sphere')
     velocity.add_argument('files', nargs='+')
     velocity.add_argument('--fit', type=float, default=3.0,
                           help='fit the Poiseuille profile over r < this (default 3)')
-    velocity.add_argument('--discard', type=float, default=0.2)
     velocity.add_argument('--batches', type=int, default=5)
     velocity.add_argument('--sphere-x', type=float,
                           help='the sphere\'s x (default: the middle of the slabs)')
     velocity.add_argument('--png')
-    density = sub.add_parser('density', help='number density per ring away from the sphere')
+    density = sub.add_parser('density', parents=[start_up],
+                             help='number density per ring away from the sphere')
     density.add_argument('files', nargs='+')
-    density.add_argument('--discard', type=float, default=0.2)
     density.add_argument('--rmin', type=float, default=0.0)
     density.add_argument('--rmax', type=float, default=1e30)
     density.add_argument('--png')

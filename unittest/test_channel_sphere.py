@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """Tests of tools/channel_sphere.py's drag analysis on synthetic fix ave/time files."""
 import argparse
+import contextlib
+import io
 import math
 import os
 import sys
@@ -78,24 +80,23 @@ class Drag(InTempDir):
         self.assertAlmostEqual(both["C_D_correlation"], channel_sphere.correlation_cd(both["Re"]), places=12)
 
 
-class WallRadius(unittest.TestCase):
+class WallRadius(InTempDir):
     def test_near_window_sees_a_local_bulge(self):
         # 20 bins of width 1.26; the wall bulges to 7 in the 4 middle bins, 6.5 elsewhere
-        with tempfile.TemporaryDirectory() as d:
-            path = os.path.join(d, "wall_radius.x")
-            with open(path, "w") as out:
-                out.write("# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n"
-                          "# Chunk Coord1 Ncount v_wall_r\n")
-                for block in range(10):
-                    out.write(f"{1000 * (block + 1)} 21 2000\n")
-                    for k in range(21):
-                        x = (k + 0.5) * 1.26
-                        count = 100.0 if k < 20 else 0.0
-                        r = 7.0 if abs(x - 12.6) < 2.0 else 6.5
-                        out.write(f"  {k + 1} {x} {count} {r if count else 0.0}\n")
-            line = printed(["radius", path, "--near", "2.0"])
-            self.assertIn("mean wall radius 6.6000", line)      # (4 x 7 + 16 x 6.5) / 20
-            self.assertIn("within 2 of x = 12.60: 7.0000", line)
+        path = self.path("wall_radius.x")
+        with open(path, "w") as out:
+            out.write("# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n"
+                      "# Chunk Coord1 Ncount v_wall_r\n")
+            for block in range(10):
+                out.write(f"{1000 * (block + 1)} 21 2000\n")
+                for k in range(21):
+                    x = (k + 0.5) * 1.26
+                    count = 100.0 if k < 20 else 0.0
+                    r = 7.0 if abs(x - 12.6) < 2.0 else 6.5
+                    out.write(f"  {k + 1} {x} {count} {r if count else 0.0}\n")
+        line = printed(["radius", path, "--near", "2.0"])
+        self.assertIn("mean wall radius 6.6000", line)      # (4 x 7 + 16 x 6.5) / 20
+        self.assertIn("within 2 of x = 12.60: 7.0000", line)
 
 
 SLABS = (3.15, 9.45, 15.75, 22.05)      # four slabs of 6.3; the sphere at x = 12.6
@@ -118,16 +119,19 @@ def write_radial_bins(path, blocks, count_and_vx, rings=RINGS, slabs=SLABS):
                     out.write(f"  {k} {r} {x} {n} {u}\n")
 
 
-def printed(argv):
-    import contextlib
-    import io
+def captured(function, *args):
+    """(what function(*args) returns, what it printed)."""
     text = io.StringIO()
     with contextlib.redirect_stdout(text):
-        channel_sphere.main(argv)
-    return text.getvalue()
+        value = function(*args)
+    return value, text.getvalue()
 
 
-class VelocityProfile(unittest.TestCase):
+def printed(argv):
+    return captured(channel_sphere.main, argv)[1]
+
+
+class VelocityProfile(InTempDir):
     def test_poiseuille_fit_recovers_centre_velocity_and_radius(self):
         # the two slabs far from the sphere carry u = 1.2 (1 - r^2/25) plus noise; the near
         # ones a flat profile that the fit must not see
@@ -136,14 +140,13 @@ class VelocityProfile(unittest.TestCase):
         def chunk(r, x):
             u = 1.2 * (1 - r * r / 25.0) if abs(x - 12.6) > 6.3 else 0.3
             return 10 * r, u + 0.01 * rng.standard_normal()
-        with tempfile.TemporaryDirectory() as d:
-            path = os.path.join(d, "velocity_profile.x")
-            write_radial_bins(path, 20, chunk)
-            words = printed(["velocity", path]).split()
-            v_c = float(words[words.index("velocity") + 1])
-            r_h = float(words[words.index("radius") + 1])
-            self.assertAlmostEqual(v_c, 1.2, delta=0.005)
-            self.assertAlmostEqual(r_h, 5.0, delta=0.02)
+        path = self.path("velocity_profile.x")
+        write_radial_bins(path, 20, chunk)
+        words = printed(["velocity", path]).split()
+        v_c = float(words[words.index("velocity") + 1])
+        r_h = float(words[words.index("radius") + 1])
+        self.assertAlmostEqual(v_c, 1.2, delta=0.005)
+        self.assertAlmostEqual(r_h, 5.0, delta=0.02)
 
     def test_density_per_ring(self):
         # counts proportional to each ring's volume in the far slabs: density 4 everywhere there;
@@ -151,44 +154,41 @@ class VelocityProfile(unittest.TestCase):
         def chunk(r, x):
             volume = math.pi * ((r + 0.121) ** 2 - (r - 0.121) ** 2) * 6.3
             return (4.0 * volume if abs(x - 12.6) > 6.3 else 0.0), 0.0
-        with tempfile.TemporaryDirectory() as d:
-            path = os.path.join(d, "velocity_profile.x")
-            write_radial_bins(path, 5, chunk)
-            values = [float(line.split()[1]) for line in printed(["density", path]).splitlines()[1:]]
-            self.assertEqual(len(values), 30)
-            for v in values:
-                self.assertAlmostEqual(v, 4.0, places=6)
+        path = self.path("velocity_profile.x")
+        write_radial_bins(path, 5, chunk)
+        values = [float(line.split()[1]) for line in printed(["density", path]).splitlines()[1:]]
+        self.assertEqual(len(values), 30)
+        for v in values:
+            self.assertAlmostEqual(v, 4.0, places=6)
 
     def test_bad_options_are_refused(self):
-        with tempfile.TemporaryDirectory() as d:
-            path = os.path.join(d, "velocity_profile.x")
-            write_radial_bins(path, 5, lambda r, x: (10.0, 1.0 - r * r / 25.0))
-            for argv, message in ((["--fit", "0"], "--fit must be positive"),
-                                  (["--fit", "0.3"], "fewer than 3 radial bins"),
-                                  (["--batches", "1"], "--batches must be at least 2"),
-                                  (["--discard", "1.0"], "--discard must be in [0, 1)")):
-                with self.assertRaises(SystemExit) as caught:
-                    channel_sphere.main(["velocity", path] + argv)
-                self.assertIn(message, str(caught.exception.code))
+        path = self.path("velocity_profile.x")
+        write_radial_bins(path, 5, lambda r, x: (10.0, 1.0 - r * r / 25.0))
+        for argv, message in ((["--fit", "0"], "--fit must be positive"),
+                              (["--fit", "0.3"], "fewer than 3 radial bins"),
+                              (["--batches", "1"], "--batches must be at least 2"),
+                              (["--discard", "1.0"], "--discard must be in [0, 1)")):
+            with self.assertRaises(SystemExit) as caught:
+                channel_sphere.main(["velocity", path] + argv)
+            self.assertIn(message, str(caught.exception.code))
 
     def test_unusable_profile_files_are_refused(self):
-        with tempfile.TemporaryDirectory() as d:
-            def written(name, blocks=5, **bins):
-                path = os.path.join(d, name)
-                write_radial_bins(path, blocks, lambda r, x: (10.0, 1.0), **bins)
-                return path
-            one_block = written("one_block", blocks=1)
-            one_slab = written("one_slab", slabs=(12.6,))
-            two_slabs = written("two_slabs", slabs=(9.45, 15.75))    # both next to the sphere
-            coarse = written("coarse", rings=(np.arange(20) + 0.5) * 0.3)
-            fine = written("fine")
-            for argv, message in ((["velocity", one_block], "fewer than 2 blocks"),
-                                  (["velocity", one_slab], "at least two slabs"),
-                                  (["density", two_slabs], "no slab farther than a quarter box"),
-                                  (["density", fine, coarse], "other radial bins")):
-                with self.assertRaises(SystemExit) as caught:
-                    channel_sphere.main(argv)
-                self.assertIn(message, str(caught.exception.code))
+        def written(name, blocks=5, **bins):
+            path = self.path(name)
+            write_radial_bins(path, blocks, lambda r, x: (10.0, 1.0), **bins)
+            return path
+        one_block = written("one_block", blocks=1)
+        one_slab = written("one_slab", slabs=(12.6,))
+        two_slabs = written("two_slabs", slabs=(9.45, 15.75))    # both next to the sphere
+        coarse = written("coarse", rings=(np.arange(20) + 0.5) * 0.3)
+        fine = written("fine")
+        for argv, message in ((["velocity", one_block], "fewer than 2 blocks"),
+                              (["velocity", one_slab], "at least two slabs"),
+                              (["density", two_slabs], "no slab farther than a quarter box"),
+                              (["density", fine, coarse], "other radial bins")):
+            with self.assertRaises(SystemExit) as caught:
+                channel_sphere.main(argv)
+            self.assertIn(message, str(caught.exception.code))
 
     def test_parabola_fit_is_exact_on_a_parabola(self):
         r = np.linspace(0.1, 3.0, 12)
@@ -228,14 +228,9 @@ class ConfinedRadius(InTempDir):
     """a_h: the Stokes radius with the channel's wall factor taken out."""
 
     def drag_of(self, path, **kw):
-        args = options(series=None, files=[path], json=None, png=None, slit=None, tube=None,
-                       centre_line=False)
-        for key, value in kw.items():
-            setattr(args, key, value)
-        import contextlib
-        import io
-        with contextlib.redirect_stdout(io.StringIO()):
-            return channel_sphere.drag_command(args)[0]
+        confinement = {"slit": None, "tube": None, "centre_line": False, **kw}
+        args = options(series=None, files=[path], json=None, png=None, **confinement)
+        return captured(channel_sphere.drag_command, args)[0][0]
 
     def test_slit_factor_limits(self):
         # an unbounded fluid as lam -> 0, Faxen's first reflection 1.004 lam, growing with lam
