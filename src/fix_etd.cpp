@@ -77,7 +77,7 @@ FixETD::~FixETD()
   memory->destroy(previous_forcing);
 }
 
-int FixETD::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
+int FixETD::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE | POST_RUN; }
 
 void FixETD::init()
 {
@@ -93,7 +93,11 @@ void FixETD::init()
     p->request_diagonal_friction();
     if (needs_random_part()) p->request_force_split();
   }
+  neighbor_safety.check_settings(lmp, this, true);
 }
+
+void FixETD::setup(int) { neighbor_safety.start_run(lmp); }
+void FixETD::post_run() { neighbor_safety.end_run(lmp, id); }
 
 void FixETD::reset_dt() { dt = update->dt; }
 

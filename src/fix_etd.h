@@ -4,6 +4,8 @@
 
 #include "fix.h"
 
+#include "neighbor_safety.h"
+
 #include <vector>
 
 namespace etd { class DpdExtrasProvider; }
@@ -16,6 +18,8 @@ class FixETD : public Fix {
   ~FixETD() override;
   int setmask() override;
   void init() override;
+  void setup(int) override;
+  void post_run() override;
   void initial_integrate(int) override;
   void final_integrate() override;
   void reset_dt() override;
@@ -38,6 +42,7 @@ class FixETD : public Fix {
   Noise noise;
   bool conserve_momentum;
   double dt;
+  etd::NeighborSafety neighbor_safety;
   bool needs_random_part() const { return order == 2 || noise == Noise::Exact; }
   void update_angular_velocities();    // pair styles with rotation (dpd/fpm)
   bool rotation_checked = false;

@@ -24,6 +24,8 @@
 #include "force.h"
 #include "lammps_compat.h"
 #include "memory.h"
+#include "modify.h"
+#include "compute.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "update.h"
@@ -46,11 +48,17 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
     iterations_sum(0.0), solves(0), predictor_steps(0)
 {
   time_integrate = 1;
+  force_reneighbor = 1;    // post_integrate() may ask for an early rebuild
+  next_reneighbor = -1;
   vector_flag = 1;
   size_vector = 5;
   extvector = 0;
   global_freq = 1;
   comm_forward = 9;     // positions and 3 values per atom (v), 6 with rotation (v, Omega)
+  // the dissipative and random forces are this fix's, so is their virial (pressure, stress)
+  virial_global_flag = virial_peratom_flag = 1;
+  thermo_virial = 1;
+  peratom_virial = false;
 
   int iarg = 3;
   while (iarg < narg) {
@@ -107,7 +115,10 @@ FixETDImplicit::~FixETDImplicit()
   memory->destroy(split);
 }
 
-int FixETDImplicit::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
+int FixETDImplicit::setmask()
+{
+  return INITIAL_INTEGRATE | POST_INTEGRATE | FINAL_INTEGRATE | POST_NEIGHBOR | POST_RUN;
+}
 
 void FixETDImplicit::init()
 {
@@ -174,9 +185,18 @@ void FixETDImplicit::init()
   etd::compat::request_fix_half_list(neighbor, this, instance_me, several_ranks);
   list_newton_off = several_ranks || !force->newton_pair;
   partners_built = -1;
+  neighbor_safety.check_settings(lmp, this, !overdamped);
+  peratom_virial = false;
+  for (int c = 0; c < modify->ncompute; c++)
+    if (utils::strmatch(modify->compute[c]->style, "stress/atom")) peratom_virial = true;
 }
 
 void FixETDImplicit::init_list(int, NeighList *ptr) { list = ptr; }
+
+void FixETDImplicit::setup(int) { neighbor_safety.start_run(lmp); }
+void FixETDImplicit::setup_post_neighbor() { neighbor_safety.record_build_positions(lmp); }
+void FixETDImplicit::post_neighbor() { neighbor_safety.record_build_positions(lmp); }
+void FixETDImplicit::post_run() { neighbor_safety.end_run(lmp, id); }
 
 void FixETDImplicit::reset_dt() { dt = update->dt; }
 
@@ -252,6 +272,27 @@ void FixETDImplicit::initial_integrate(int)
   drift(0.5);
 }
 
+// The next friction step happens at x + h/2 (v + h F/m) (the next step's first kick and half
+// drift; the last force evaluation stands in for the coming one), or overdamped near x + h/2 v;
+// LAMMPS's check after this looks only at x. Where an atom would be more than half the skin
+// from its list there, the list is rebuilt now.
+void FixETDImplicit::post_integrate()
+{
+  const int nlocal = atom->nlocal;
+  double **v = atom->v;
+  double **f = atom->f;
+  const int *type = atom->type;
+  const double *rmass = atom->rmass;
+  const double *mass = atom->mass;
+  std::vector<double> &lead = work.lead;
+  lead.resize(3 * nlocal);
+  for (int i = 0; i < nlocal; i++) {
+    const double kick = overdamped ? 0.0 : dt / (rmass ? rmass[i] : mass[type[i]]);
+    for (int k = 0; k < 3; k++) lead[3 * i + k] = 0.5 * dt * (v[i][k] + kick * f[i][k]);
+  }
+  if (neighbor_safety.beyond_half_skin(lmp, groupbit, lead)) next_reneighbor = update->ntimestep;
+}
+
 void FixETDImplicit::final_integrate()
 {
   if (!overdamped) kick(0.5);
@@ -273,7 +314,10 @@ void FixETDImplicit::find_partners()
     owner[2 * i] = comm->me;
     owner[2 * i + 1] = i;
   }
-  forward_exchange({{&owner, 2}});
+  // and how many box vectors it lies from its owner (the velocity offset of a moving image)
+  std::vector<double> &image = work.ghost_image;
+  image.assign(6 * (nlocal + nghost), 0.0);
+  forward_exchange({{&owner, 2}, {&image, 6, true}});
 
   struct Remote {
     int rank, index, ghost;
@@ -318,6 +362,19 @@ void FixETDImplicit::find_partners()
 
 int FixETDImplicit::npartners() const { return atom->nlocal + partner_slots; }
 
+// The velocity a periodic image has on top of its owner's under fix deform ... remap v, as
+// LAMMPS's own ghost communication adds it (AtomVec::pack_comm_vel); false where it has none.
+bool FixETDImplicit::image_velocity(int ghost, double offset[3]) const
+{
+  if (!(atom->mask[ghost] & domain->deform_groupbit)) return false;
+  const double *n = &work.ghost_image[6 * ghost];
+  const double *rate = domain->h_rate;
+  offset[0] = n[0] * rate[0] + n[5] * rate[5] + n[4] * rate[4];
+  offset[1] = n[1] * rate[1] + n[3] * rate[3];
+  offset[2] = n[2] * rate[2];
+  return offset[0] != 0.0 || offset[1] != 0.0 || offset[2] != 0.0;
+}
+
 void FixETDImplicit::build_pairs()
 {
   if (partners_built != neighbor->ncalls) find_partners();
@@ -335,6 +392,13 @@ void FixETDImplicit::build_pairs()
   pair_tags.clear();
   fpm_pairs.clear();
   fpm_noise.clear();
+  pair_distance.clear();
+  pair_offset.clear();
+  fpm_offset.clear();
+  const bool moving_images = domain->deform_vremap;
+  image_friction.assign(moving_images ? dofs * nlocal : 0, 0.0);
+  auto keep_j = [=](int j) { return j < nlocal; };
+  double offset[3];
   int fixed_partner = 0;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
@@ -363,8 +427,14 @@ void FixETDImplicit::build_pairs()
       const etd::PairCoefficients *c = pair_table[type[i] * ntypes1 + type[j]];
       if (!c) {
         const etd::FpmCoefficients *fc = fpm_table[type[i] * ntypes1 + type[j]];
-        if (fc && add_fpm_pair(*fc, i, partner, d, rsq, factor, tag[i], tag[j], step) && (!i_mobile || !j_mobile))
-          fixed_partner = 1;
+        if (fc && add_fpm_pair(*fc, i, partner, d, rsq, factor, tag[i], tag[j], step)) {
+          if (!i_mobile || !j_mobile) fixed_partner = 1;
+          if (moving_images) {
+            if (j < nlocal || !image_velocity(j, offset)) offset[0] = offset[1] = offset[2] = 0.0;
+            else etd::accumulate_fpm_image_offset(fpm_pairs.back(), offset, image_friction.data(), keep_j);
+            fpm_offset.insert(fpm_offset.end(), offset, offset + 3);
+          }
+        }
         continue;
       }
       if (c->gamma == 0.0) continue;
@@ -385,14 +455,24 @@ void FixETDImplicit::build_pairs()
       pair_noise.push_back((factor == 1.0 ? 1.0 : std::sqrt(factor)) * c->sigma * w_r);
       pair_tags.push_back({tag[i], tag[j]});
       if (!i_mobile || !j_mobile) fixed_partner = 1;
+      pair_distance.push_back(r);
+      if (moving_images) {
+        if (j < nlocal || !image_velocity(j, offset)) offset[0] = offset[1] = offset[2] = 0.0;
+        else etd::accumulate_image_offset(p, offset, image_friction.data(), keep_j, dofs);
+        pair_offset.insert(pair_offset.end(), offset, offset + 3);
+      }
     }
   }
   for (size_t n = 0; n < pairs.size(); n++)
     pair_noise[n] *= noise.gaussian(pair_tags[n].first, pair_tags[n].second, step);
   etd::find_runs(pairs, pair_runs);
-  int any = 0;
-  MPI_Allreduce(&fixed_partner, &any, 1, MPI_INT, MPI_MAX, world);
-  any_fixed_partner = any;
+  // one reduction: a pair with an atom outside the group, and how far atoms are from where the
+  // list was built (this friction step's positions were not checked by LAMMPS)
+  double local[3] = {static_cast<double>(fixed_partner)}, global[3];
+  neighbor_safety.largest_displacements(lmp, groupbit, local + 1);
+  etd::NeighborSafety::reduce_with_flag(local, global, world);
+  any_fixed_partner = global[0] > 0.0;
+  neighbor_safety.count_if_outrun(lmp, global + 1);
 }
 
 // One dpd/fpm pair (friction_operator.h): its geometry and its random force on i (without the
@@ -648,6 +728,9 @@ void FixETDImplicit::friction_noise_step()
       const int d = dofs * i + k;
       rhs[d] = inertia[d] * *dof_pointer(i, k) - 0.5 * h * gu[d] + impulse[d];
     }
+  // moving images: M (v' - v) = -h/2 G (v + v') - h G_offset + sqrt(h) B xi
+  if (!image_friction.empty())
+    for (int d = 0; d < dofs * nlocal; d++) rhs[d] -= h * image_friction[d];
   std::vector<double> &solution = work.solution;
   // u holds the group's old velocities (the rows solve() keeps; the doubled velocities of atoms
   // outside the group are in rows it holds at zero)
@@ -696,7 +779,7 @@ void FixETDImplicit::friction_noise_step()
   const double dof = sums[COMPONENTS] - 3.0;
   friction_step_temperature = dof > 0.0 ? twice_kinetic / (force->boltz * dof) * force->mvv2e : 0.0;
 
-  if (split_requested) {
+  if (split_requested || thermo_virial) {
     // the Crank-Nicolson mean velocity (v + v')/2; u holds v in the group and 2 v outside it
     std::vector<double> &mean = work.mean;
     mean.resize(dofs * nlocal);
@@ -705,18 +788,82 @@ void FixETDImplicit::friction_noise_step()
       for (int k = 0; k < dofs; k++)
         mean[dofs * i + k] = 0.5 * (u[dofs * i + k] + (mobile ? *dof_pointer(i, k) : 0.0));
     }
-    record_split(mean, impulse, 1.0 / h);    // impulse = sqrt(h) B xi
+    record_friction_forces(mean, impulse, 1.0 / h);    // impulse = sqrt(h) B xi
   }
 }
 
-void FixETDImplicit::record_split(const std::vector<double> &mean_velocity,
-                                  const std::vector<double> &random_force, double random_scale)
+void FixETDImplicit::record_friction_forces(const std::vector<double> &mean_velocity,
+                                            const std::vector<double> &random_force, double random_scale)
+{
+  gather_operand(mean_velocity.data(), false);
+  if (split_requested) record_split(random_force, random_scale);
+  if (thermo_virial) tally_friction_virial();
+}
+
+// Virial of the step's dissipative and random pair forces, sum over pairs of r_ij F_ij (F on i,
+// at the velocities in operand, the random force sigma w_R theta / sqrt(h) in both schemes).
+// A pair that crosses ranks is held by both: each counts half. Per atom (compute stress/atom):
+// half to each of the pair's atoms.
+void FixETDImplicit::tally_friction_virial()
+{
+  const int nlocal = atom->nlocal;
+  const double random_scale = 1.0 / std::sqrt(dt);
+  for (int k = 0; k < 6; k++) virial[k] = 0.0;
+  if (peratom_virial) {
+    if (maxvatom < atom->nmax) {
+      maxvatom = atom->nmax;
+      memory->destroy(vatom);
+      memory->create(vatom, maxvatom, 6, "etd:vatom");
+    }
+    for (int i = 0; i < nlocal; i++)
+      for (int k = 0; k < 6; k++) vatom[i][k] = 0.0;
+  }
+  auto tally = [&](int i, int j, const double rij[3], const double f[3]) {
+    const double w[6] = {rij[0] * f[0], rij[1] * f[1], rij[2] * f[2],
+                         rij[0] * f[1], rij[0] * f[2], rij[1] * f[2]};
+    const double share = (j < nlocal) ? 1.0 : 0.5;
+    for (int k = 0; k < 6; k++) virial[k] += share * w[k];
+    if (!peratom_virial) return;
+    for (int k = 0; k < 6; k++) vatom[i][k] += 0.5 * w[k];
+    if (j < nlocal)
+      for (int k = 0; k < 6; k++) vatom[j][k] += 0.5 * w[k];
+  };
+  const double no_offset[3] = {0.0, 0.0, 0.0};
+  for (size_t n = 0; n < pairs.size(); n++) {
+    const etd::FrictionPair &p = pairs[n];
+    const double *offset = pair_offset.empty() ? no_offset : &pair_offset[3 * n];
+    const double *uj = &operand[dofs * p.j];
+    const double moving_j[3] = {uj[0] + offset[0], uj[1] + offset[1], uj[2] + offset[2]};
+    const double along = -etd::pair_friction(p, &operand[dofs * p.i], moving_j) + random_scale * pair_noise[n];
+    const double r = pair_distance[n];
+    const double rij[3] = {r * p.e[0], r * p.e[1], r * p.e[2]};
+    const double f[3] = {along * p.e[0], along * p.e[1], along * p.e[2]};
+    tally(p.i, p.j, rij, f);
+  }
+  for (size_t n = 0; n < fpm_pairs.size(); n++) {
+    const etd::FpmFrictionPair &p = fpm_pairs[n];
+    const double *offset = fpm_offset.empty() ? no_offset : &fpm_offset[3 * n];
+    const double *qj = &operand[6 * p.j];
+    const double moving_j[6] = {qj[0] + offset[0], qj[1] + offset[1], qj[2] + offset[2], qj[3], qj[4], qj[5]};
+    double friction[3];
+    etd::fpm_pair_friction(p, &operand[6 * p.i], moving_j, 1.0, friction);
+    const double r = 2.0 * p.half_r;
+    const double rij[3] = {r * p.e[0], r * p.e[1], r * p.e[2]};
+    double f[3];
+    for (int k = 0; k < 3; k++) f[k] = -friction[k] + random_scale * fpm_noise[3 * n + k];
+    tally(p.i, p.j, rij, f);
+  }
+}
+
+// D = -G operand - the moving images' constant part, R = random_scale * random_force
+void FixETDImplicit::record_split(const std::vector<double> &random_force, double random_scale)
 {
   std::vector<double> &gmean = work.gmean;
-  apply_friction(mean_velocity.data(), gmean, false);
+  gmean.assign(dofs * atom->nlocal, 0.0);
+  accumulate_friction(operand.data(), gmean.data());
   for (int i = 0; i < atom->nlocal; i++)
     for (int k = 0; k < 3; k++) {
-      split[i][k] = -gmean[dofs * i + k];
+      split[i][k] = -gmean[dofs * i + k] - (image_friction.empty() ? 0.0 : image_friction[dofs * i + k]);
       split[i][3 + k] = random_scale * random_force[dofs * i + k];
     }
 }
@@ -738,7 +885,10 @@ bool FixETDImplicit::overdamped_solve(const std::vector<double> &impulse, std::v
       for (int k = 0; k < 3; k++) u[3 * i + k] = v[i][k];
   apply_friction(u.data(), gu, false);
   for (int i = 0; i < nlocal; i++)
-    for (int k = 0; k < 3; k++) rhs[3 * i + k] = f[i][k] + impulse[3 * i + k] - gu[3 * i + k];
+    for (int k = 0; k < 3; k++) {
+      rhs[3 * i + k] = f[i][k] + impulse[3 * i + k] - gu[3 * i + k];
+      if (!image_friction.empty()) rhs[3 * i + k] -= image_friction[3 * i + k];
+    }
   // without a fixed partner nothing sets the mean velocity: G is singular in the translation,
   // which is removed (the group's mean velocity is zero)
   return solve(rhs, velocity, 0.0, 1.0, !any_fixed_partner, singular_ok);
@@ -773,7 +923,7 @@ void FixETDImplicit::overdamped_step()
           x[i][k] += h * predicted[3 * i + k];
           v[i][k] = predicted[3 * i + k];
         }
-    if (split_requested) overdamped_split(predicted, impulse);
+    if (split_requested || thermo_virial) overdamped_split(predicted, impulse);
     return;
   }
   for (int i = 0; i < nlocal; i++)
@@ -793,7 +943,7 @@ void FixETDImplicit::overdamped_step()
         x[i][k] += h * solution[3 * i + k] - 0.5 * h * predicted[3 * i + k];
         v[i][k] = solution[3 * i + k];
       }
-  if (split_requested) overdamped_split(solution, impulse);
+  if (split_requested || thermo_virial) overdamped_split(solution, impulse);
 }
 
 // D = -G v with G of the last solve (atoms outside the group at their own velocity), R = the
@@ -807,7 +957,7 @@ void FixETDImplicit::overdamped_split(const std::vector<double> &velocity,
   mean.resize(3 * nlocal);
   for (int i = 0; i < nlocal; i++)
     for (int k = 0; k < 3; k++) mean[3 * i + k] = (mask[i] & groupbit) ? velocity[3 * i + k] : atom->v[i][k];
-  record_split(mean, impulse, 1.0);    // impulse = B xi / sqrt(h)
+  record_friction_forces(mean, impulse, 1.0);    // impulse = B xi / sqrt(h)
 }
 
 /* ---- output and communication ---------------------------------------------------------- */
@@ -857,7 +1007,8 @@ int FixETDImplicit::pack_forward_comm(int n, int *list_, double *buf, int pbc_fl
     for (int s = 0; s < comm_nslots; s++) {
       const int width = comm_slots[s].width;
       const double *values = comm_slots[s].vector->data() + width * j;
-      for (int k = 0; k < width; k++) buf[m++] = values[k];
+      const bool shifted = comm_slots[s].image_counts && pbc_flag;
+      for (int k = 0; k < width; k++) buf[m++] = values[k] + (shifted ? pbc[k] : 0);
     }
   }
   return m;

@@ -7,6 +7,7 @@
 
 #include "dpd_random.h"
 #include "friction_operator.h"
+#include "neighbor_safety.h"
 #include "partner_exchange.h"
 
 #include <initializer_list>
@@ -29,6 +30,11 @@ class FixETDImplicit : public Fix {
   int setmask() override;
   void init() override;
   void init_list(int, class NeighList *) override;
+  void setup(int) override;
+  void setup_post_neighbor() override;
+  void post_neighbor() override;
+  void post_integrate() override;
+  void post_run() override;
   void initial_integrate(int) override;
   void final_integrate() override;
   void reset_dt() override;
@@ -72,7 +78,16 @@ class FixETDImplicit : public Fix {
   std::vector<std::pair<tagint, tagint>> pair_tags;    // (its atom IDs, which key the noise)
   std::vector<etd::FpmFrictionPair> fpm_pairs;    // dpd/fpm pairs of this step
   std::vector<double> fpm_noise;                  // and their random forces (3 per pair)
+  std::vector<double> pair_distance;              // r of each DPD pair (its virial)
+  // under remap v, each pair's velocity offset of j's moving image (3 per pair, zero for most)
+  std::vector<double> pair_offset, fpm_offset;
+  etd::NeighborSafety neighbor_safety;
   bool any_fixed_partner;                  // some pair couples to an atom outside the group
+  // Under fix deform ... remap v: per owned atom (dofs values), G applied to the velocity
+  // offsets of the moving periodic images its pairs use (friction_operator.h), this step's
+  // constant part of the friction; empty without remap v
+  std::vector<double> image_friction;
+  bool image_velocity(int ghost, double offset[3]) const;
 
   // The atoms G acts on, "partners": the owned atoms [0, nlocal), then one slot for each atom
   // of another rank that a pair uses (partner_exchange.h). Images of owned atoms are the owned
@@ -94,6 +109,7 @@ class FixETDImplicit : public Fix {
   struct CommSlot {
     std::vector<double> *vector;
     int width;
+    bool image_counts = false;    // 6 values per atom that gain the periodic shift (pbc) sent with it
   };
   static constexpr int max_comm_slots = 3;
   CommSlot comm_slots[max_comm_slots];
@@ -107,7 +123,9 @@ class FixETDImplicit : public Fix {
     std::vector<double> masses, rhs, inv_diag, block_inverse, start_product;    // solve()
     std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia, predicted;    // the steps
     std::vector<double> ghost_u, ghost_owner;    // per ghost: velocities, owner (rank, index)
+    std::vector<double> ghost_image;    // per ghost: its count of box vectors (pbc) from its owner
     std::vector<double> mean, gmean;    // record_split()
+    std::vector<double> lead;    // post_integrate(): how far the next friction step moves each atom
     etd::CgWorkspace cg;
   } work;
 
@@ -115,8 +133,13 @@ class FixETDImplicit : public Fix {
   int split_rows;    // rows of split allocated (atom->nmax at the last grow)
   double **split;
   void overdamped_split(const std::vector<double> &velocity, const std::vector<double> &impulse);
-  void record_split(const std::vector<double> &mean_velocity, const std::vector<double> &random_force,
-                    double random_scale);
+  void record_split(const std::vector<double> &random_force, double random_scale);
+  // The dissipative and random forces of the step's pairs, at the given velocities (owned atoms,
+  // remote partners filled here): for compute dpd/split and the virial
+  void record_friction_forces(const std::vector<double> &mean_velocity,
+                              const std::vector<double> &random_force, double random_scale);
+  bool peratom_virial;    // a compute stress/atom exists: fill vatom too
+  void tally_friction_virial();
 
   int last_iterations;
   double last_residual;

@@ -32,14 +32,18 @@ struct FrictionPair {
 // out_i += (G u)_i restricted to the given pairs; out_j gets the opposite (Newton's third law).
 // update_j(j) says whether j's share is kept (false for ghosts of pairs that another rank
 // also holds).
+// One pair's share of G u on i, gamma w_D (e . (u_i - u_j)), along e (and the opposite on j).
+inline double pair_friction(const FrictionPair &p, const double *ui, const double *uj)
+{
+  return p.friction * (p.e[0] * (ui[0] - uj[0]) + p.e[1] * (ui[1] - uj[1]) + p.e[2] * (ui[2] - uj[2]));
+}
+
 template <typename UpdateJ>
 inline void accumulate_friction(const std::vector<FrictionPair> &pairs, const double *u,
                                 double *out, UpdateJ update_j, int stride = 3)
 {
   for (const FrictionPair &p : pairs) {
-    const double *ui = u + stride * p.i, *uj = u + stride * p.j;
-    const double projected = p.friction * (p.e[0] * (ui[0] - uj[0]) + p.e[1] * (ui[1] - uj[1]) +
-                                           p.e[2] * (ui[2] - uj[2]));
+    const double projected = pair_friction(p, u + stride * p.i, u + stride * p.j);
     double *oi = out + stride * p.i;
     oi[0] += projected * p.e[0];
     oi[1] += projected * p.e[1];
@@ -192,22 +196,57 @@ inline void scatter_fpm(const FpmFrictionPair &p, const double force[3], double 
   }
 }
 
+// One pair's friction force on i from the generalised velocities qi, qj (v, Omega each), times
+// scale: central (e.u) e + shear (u - (e.u) e) of the slip velocity u.
+inline void fpm_pair_friction(const FpmFrictionPair &p, const double *qi, const double *qj,
+                              double scale, double force[3])
+{
+  const double spin[3] = {qi[3] + qj[3], qi[4] + qj[4], qi[5] + qj[5]};
+  const double u[3] = {qi[0] - qj[0] + p.half_r * (p.e[1] * spin[2] - p.e[2] * spin[1]),
+                       qi[1] - qj[1] + p.half_r * (p.e[2] * spin[0] - p.e[0] * spin[2]),
+                       qi[2] - qj[2] + p.half_r * (p.e[0] * spin[1] - p.e[1] * spin[0])};
+  const double shear = scale * p.shear;
+  const double normal = scale * (p.central - p.shear) * (p.e[0] * u[0] + p.e[1] * u[1] + p.e[2] * u[2]);
+  for (int k = 0; k < 3; k++) force[k] = shear * u[k] + normal * p.e[k];
+}
+
 template <typename UpdateJ>
 inline void accumulate_fpm_friction(const std::vector<FpmFrictionPair> &pairs, const double *q,
                                     double *out, UpdateJ update_j, double scale = 1.0)
 {
   for (const FpmFrictionPair &p : pairs) {
-    const double *qi = q + 6 * p.i, *qj = q + 6 * p.j;
-    const double spin[3] = {qi[3] + qj[3], qi[4] + qj[4], qi[5] + qj[5]};
-    const double u[3] = {qi[0] - qj[0] + p.half_r * (p.e[1] * spin[2] - p.e[2] * spin[1]),
-                         qi[1] - qj[1] + p.half_r * (p.e[2] * spin[0] - p.e[0] * spin[2]),
-                         qi[2] - qj[2] + p.half_r * (p.e[0] * spin[1] - p.e[1] * spin[0])};
-    const double shear = scale * p.shear;
-    const double normal = scale * (p.central - p.shear) * (p.e[0] * u[0] + p.e[1] * u[1] + p.e[2] * u[2]);
-    const double force[3] = {shear * u[0] + normal * p.e[0], shear * u[1] + normal * p.e[1],
-                             shear * u[2] + normal * p.e[2]};
+    double force[3];
+    fpm_pair_friction(p, q + 6 * p.i, q + 6 * p.j, scale, force);
     scatter_fpm(p, force, out, update_j);
   }
+}
+
+/* ---- periodic images that move with a deforming box --------------------------------------
+   Under fix deform ... remap v the image of atom j across a periodic boundary moves with j's
+   velocity plus a constant offset (the box's rate of change times the image's count of box
+   vectors). The solver's unknowns are the owners' velocities, so for such a pair G u gains the
+   pair's operator applied to (u_i = 0, u_j = offset): a term that does not depend on the
+   unknowns and moves to the right-hand side of the step (the shear the boundary imposes). */
+template <typename UpdateJ>
+inline void accumulate_image_offset(const FrictionPair &p, const double offset[3], double *out,
+                                    UpdateJ update_j, int stride = 3)
+{
+  const double at_rest[3] = {0.0, 0.0, 0.0};
+  const double projected = pair_friction(p, at_rest, offset);
+  for (int k = 0; k < 3; k++) out[stride * p.i + k] += projected * p.e[k];
+  if (update_j(p.j))
+    for (int k = 0; k < 3; k++) out[stride * p.j + k] -= projected * p.e[k];
+}
+
+template <typename UpdateJ>
+inline void accumulate_fpm_image_offset(const FpmFrictionPair &p, const double offset[3], double *out,
+                                        UpdateJ update_j)
+{
+  const double at_rest[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  const double moving[6] = {offset[0], offset[1], offset[2], 0.0, 0.0, 0.0};
+  double force[3];
+  fpm_pair_friction(p, at_rest, moving, 1.0, force);
+  scatter_fpm(p, force, out, update_j);
 }
 
 // noise: 3 values per pair, the random force on i (without the time factor), times scale

@@ -88,7 +88,7 @@ TEST(DpdDesign, VariablesWorkInPairCoeff)
 {
   Lammps l;
   l.cmds({"dpd/design fluid eta 30 sc 500" + FLUID, "units lj", "atom_modify map array",
-          "comm_modify vel yes", "region box block 0 6 0 6 0 6", "create_box 1 box",
+          "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "region box block 0 6 0 6 0 6", "create_box 1 box",
           "create_atoms 1 single 2.0 3.0 3.0", "create_atoms 1 single 2.6 3.0 3.0",
           "mass 1 1.0", "velocity all set 0.5 0 0", "group right id 2",
           "velocity right set -0.5 0 0", "pair_style dpd/gen 0.0 1.5 1234",

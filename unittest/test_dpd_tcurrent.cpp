@@ -139,7 +139,7 @@ TEST(TCurrent, MatchesDirectSumOnAnyRankCount)
   for (int ranks : {1, 2, 4}) {
     if (ranks > etdtest::world_size()) break;
     results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
-      l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + DATA,
+      l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + DATA,
               "mass * 1.0", "pair_style dpd/gen 1.0 1.0 77", "pair_coeff 1 1 25 4.5 0.5",
               "fix 1 all nve", "timestep 0.01", "compute J all dpd/tcurrent " + std::to_string(K),
               "thermo_style custom step c_J[1]", "run 50 post no"});

@@ -20,7 +20,7 @@ std::vector<double> mean_values(const std::string &pair_coeff, double mass, doub
   const std::string data = etdtest::work_file("equilibrium_" + std::to_string(natoms) + ".data");
   etdtest::write_random_data(data, natoms, L, 31337, 1, 0.0);
   Lammps l;
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + data,
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + data,
           "mass 1 " + std::to_string(mass), "velocity all create 1.0 8731 mom yes dist gaussian",
           "pair_style dpd/gen 1.0 1.0 4242", pair_coeff, "timestep " + std::to_string(dt),
           "fix integrate all " + integrator, "run " + std::to_string(equilibrate) + " post no",

@@ -17,7 +17,7 @@ void fluid(Lammps &l, const std::string &pair_coeff, double mass = 0.01, double 
            int natoms = 500, double L = 5.0)
 {
   etdtest::write_random_data(DATA, natoms, L, 1234, 1, 1.0);
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + DATA,
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + DATA,
           "mass 1 " + std::to_string(mass), "pair_style dpd/gen " + std::to_string(T) + " 1.0 555",
           pair_coeff});
 }
@@ -95,12 +95,12 @@ TEST(FixEtd, RestartContinuesExactlyWithOrder2State)
   {
     // without order-2 state the continuation must differ: the test can fail
     Lammps l;
-    l.cmds({"plugin load " + std::string(ETD_PLUGIN_PATH), "read_restart " + restart, "comm_modify vel yes",
+    l.cmds({"plugin load " + std::string(ETD_PLUGIN_PATH), "read_restart " + restart, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
             "fix 1 all etd order 1", "run 30 post no"});
     EXPECT_GT(max_abs_diff(l.gather("v"), v_ref), 1e-8);
   }
   Lammps l;
-  l.cmds({"read_restart " + restart, "comm_modify vel yes", "fix 1 all etd order 2", "run 30 post no"});
+  l.cmds({"read_restart " + restart, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "fix 1 all etd order 2", "run 30 post no"});
   EXPECT_LT(max_abs_diff(l.gather("x"), x_ref), 1e-12);
   EXPECT_LT(max_abs_diff(l.gather("v"), v_ref), 1e-10);
 }

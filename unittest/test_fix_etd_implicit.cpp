@@ -17,7 +17,7 @@ const std::string DATA = etdtest::work_file("etd_implicit_config.data");
 void fluid(Lammps &l, double mass = 0.01)
 {
   etdtest::write_random_data(DATA, 500, 5.0, 4321, 1, 1.0);
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + DATA,
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + DATA,
           "mass 1 " + std::to_string(mass), "pair_style dpd/gen 1.0 1.0 555",
           "pair_coeff 1 1 18.75 4.5 0.5"});
 }
@@ -201,7 +201,7 @@ TEST(FixEtdImplicit, RestartContinuesTheTrajectory)
     v_ref = l.gather("v");
   }
   Lammps l;
-  l.cmds({"read_restart " + restart, "comm_modify vel yes", "fix 1 all etd scheme implicit tol 1e-12",
+  l.cmds({"read_restart " + restart, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "fix 1 all etd scheme implicit tol 1e-12",
           "run 20 post no"});
   double scale = 0.0;
   for (double v : v_ref) scale = std::max(scale, std::fabs(v));
@@ -262,7 +262,7 @@ TEST(FixEtdImplicit, StartFromOldVelocitiesSolvesTheSameSystem)
   auto one_step = [](const std::string &velocity, const std::string &options, double *iterations) {
     Lammps l;
     etdtest::write_random_data(DATA, 500, 5.0, 4321, 1, 1.0);
-    l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + DATA,
+    l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + DATA,
             "mass 1 0.001", "pair_style dpd/gen 0.0 1.0 555", "pair_coeff 1 1 0.0 4.5 0.5",
             "variable wave atom sin(2.0*PI*z/5.0)", "velocity all set " + velocity,
             "timestep 0.001", "fix 1 all etd scheme implicit " + options, "run 1 post no"});
@@ -326,7 +326,7 @@ TEST(FixEtdImplicit, OverdampedCouetteFlowIsLinear)
   etdtest::write_random_data(data, 2000, 8.0, 97, 1, 0.0);
   Lammps l;
   const double U = 5.0;
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + data,
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + data,
           "change_box all z final 0 10 remap", "mass 1 0.01", "pair_style dpd/gen 1.0 1.0 555",
           "pair_coeff 1 1 18.75 4.5 0.5", "region bottom block INF INF INF INF INF 1.0",
           "region top block INF INF INF INF 9.0 INF", "group bottom region bottom",
@@ -409,7 +409,7 @@ TEST(FixEtdImplicit, OverdampedCouetteFlowIsLinear)
 TEST(FixEtdImplicit, FpmRefusesOverdampedAndZeroInertia)
 {
   const std::vector<std::string> box = {
-      "units lj", "atom_style sphere", "comm_modify vel yes", "region box block 0 5 0 5 0 5",
+      "units lj", "atom_style sphere", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "region box block 0 5 0 5 0 5",
       "create_box 1 box", "create_atoms 1 single 1 1 1", "create_atoms 1 single 1.5 1 1",
       "pair_style dpd/fpm 1.0 1.0 123", "pair_coeff 1 1 25 4.5 4.5 0.5"};
   {
@@ -426,5 +426,86 @@ TEST(FixEtdImplicit, FpmRefusesOverdampedAndZeroInertia)
     cmds.insert(cmds.end(), {"set atom 2 diameter 0.0", "fix 1 all etd scheme implicit", "run 1"});
     const std::string message = l.error_of(cmds);
     EXPECT_NE(message.find("atom 2 has zero moment of inertia"), std::string::npos) << message;
+  }
+}
+
+namespace {
+std::string read_file(const std::string &path)
+{
+  std::string text;
+  if (FILE *f = std::fopen(path.c_str(), "r")) {
+    char buffer[4096];
+    size_t n;
+    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
+    std::fclose(f);
+  }
+  return text;
+}
+}    // namespace
+
+// LAMMPS 29Sep2021's default neigh_modify delay 10 lets the atoms of a thermalised m = 0.01
+// fluid run about 1.3 beyond their list in the 10 unchecked steps at dt = 0.003 (kBT rose to
+// 1.04-1.07 before this check): every scheme stops with an ERROR naming neigh_modify. The
+// zero-mass scheme has no speed to bound, so it needs checks every step whatever the step. A
+// step at which the fastest atom stays within half the skin over the unchecked steps is
+// accepted with the default settings.
+TEST(FixEtdImplicit, RefusesNeighborSettingsThatLetAtomsOutrunTheSkin)
+{
+  struct Case {
+    std::string fix, timestep, neigh, expected;
+  };
+  const std::vector<Case> cases = {
+      {"etd scheme implicit", "0.003", "neigh_modify every 1 delay 10 check yes", "lets atoms outrun the neighbor skin"},
+      {"etd scheme implicit", "0.003", "neigh_modify every 2 delay 0 check yes", "lets atoms outrun the neighbor skin"},
+      {"etd", "0.003", "neigh_modify every 1 delay 10 check yes", "lets atoms outrun the neighbor skin"},
+      {"etd scheme implicit overdamped yes", "0.0001", "neigh_modify every 1 delay 10 check yes",
+       "a zero-mass step has no speed to bound"},
+      {"etd scheme implicit", "0.003", "neigh_modify every 1 delay 0 check no", ""},
+      {"etd scheme implicit", "0.00001", "neigh_modify every 1 delay 10 check yes", ""},
+  };
+  for (const auto &c : cases) {
+    Lammps l;
+    fluid(l);
+    l.cmds({"velocity all create 1.0 5 mom yes dist gaussian", "timestep " + c.timestep});
+    const std::string message = l.error_of({c.neigh, "fix 1 all " + c.fix, "run 2 post no"});
+    if (c.expected.empty()) {
+      EXPECT_EQ(message, "") << c.fix << " dt " << c.timestep << ", " << c.neigh;
+      continue;
+    }
+    EXPECT_NE(message.find(c.expected), std::string::npos) << c.fix << ", " << c.neigh << " gave: '" << message << "'";
+    EXPECT_NE(message.find("neigh_modify every 1 delay 0 check yes"), std::string::npos) << message;
+  }
+}
+
+// A run in which LAMMPS counted dangerous builds, or in which the friction step found atoms
+// that could have reached each other unlisted, ends with a WARNING that says so; a run with a
+// skin wide enough for the step ends without one. The implicit scheme asks for a rebuild one
+// step early where its next friction step would take an atom beyond half the skin, so at a
+// skin of 0.6 (atoms move up to about 0.13 a step here) it neither outruns its list nor has
+// dangerous builds; at 0.02 nothing can help and it says so. The diagonal scheme (no early
+// rebuilds) shows LAMMPS's own count.
+TEST(FixEtdImplicit, RunWithDangerousBuildsEndsWithAWarning)
+{
+  struct Case {
+    std::string fix, skin;
+    bool warned;
+  };
+  for (const Case &c : {Case{"etd scheme implicit", "0.02", true}, Case{"etd scheme implicit", "0.6", false},
+                        Case{"etd", "0.02", true}}) {
+    const std::string log = etdtest::work_file("etd_implicit_danger_" + std::to_string(etdtest::world_rank()) + ".log");
+    {
+      Lammps l;
+      fluid(l);
+      l.cmds({"log " + log, "neighbor " + c.skin + " bin", "velocity all create 1.0 5 mom yes dist gaussian",
+              "timestep " + std::string(c.fix == "etd" ? "0.001" : "0.003"), "fix 1 all " + c.fix,
+              "run 50"});
+    }
+    const std::string text = read_file(log);
+    ASSERT_NE(text.find("Dangerous builds"), std::string::npos) << "no run statistics in " << log;
+    const bool warned = text.find("dangerous neighbor list builds in this run") != std::string::npos;
+    const bool dangerous = text.find("Dangerous builds = 0") == std::string::npos;
+    EXPECT_EQ(warned, c.warned) << c.fix << ", skin " << c.skin;
+    if (c.fix == "etd") EXPECT_TRUE(dangerous) << "the diagonal scheme at skin 0.02";
+    if (!c.warned) EXPECT_FALSE(dangerous) << c.fix << ", skin " << c.skin;
   }
 }

@@ -20,7 +20,7 @@ const std::string DATA = etdtest::work_file("fpm_implicit.data");
 
 std::vector<std::string> sphere_fluid(const std::string &data, double mass)
 {
-  return {"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
+  return {"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
           "read_data " + data, "set group all mass " + std::to_string(mass)};
 }
 

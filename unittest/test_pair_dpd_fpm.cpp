@@ -23,7 +23,7 @@ void setup_box(Lammps &l, const std::string &newton = "on", const std::string &b
 {
   etdtest::write_random_sphere_data(DATA, 648, 6.0, 4711, 2, 1.5, 2.0, 1.0);
   l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "boundary " + boundary,
-          "newton " + newton, "comm_modify vel yes", "read_data " + DATA, "set group all mass 1.0",
+          "newton " + newton, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + DATA, "set group all mass 1.0",
           "timestep 0.01", "thermo_modify norm no", "compute virial all pressure NULL virial",
           "compute tq all property/atom tqx tqy tqz"});
 }
@@ -194,7 +194,7 @@ TEST(PairDpdFpm, FixEtdUsesTheRotationalFrictionDiagonal)
   // -G (w1 + w2). The ETD update then gives w1' = e^z w1 and w2' = -(1 - e^z) w1 with
   // z = -G dt / I: an explicit update would give 1 - G dt/I instead of e^z.
   Lammps l;
-  l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
+  l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
           "region box block 0 10 0 10 0 10", "create_box 1 box", "create_atoms 1 single 5 5 5",
           "create_atoms 1 single 5.6 5 5", "set group all diameter 0.5", "set group all mass 2.0",
           "group first id 1", "set group first omega 0 0 3.0", "timestep 0.2",
@@ -245,7 +245,7 @@ TEST(PairDpdFpm, RestartContinuesExactly)
       w_ref = l.gather("omega");
     }
     Lammps l;
-    l.cmds({"read_restart " + restart, "comm_modify vel yes", "timestep 0.01",
+    l.cmds({"read_restart " + restart, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "timestep 0.01",
             "fix 1 all " + integrator, "run 20"});
     EXPECT_LT(max_rel_diff(l.gather("x"), x_ref), 1e-13) << integrator;
     EXPECT_LT(max_rel_diff(l.gather("v"), v_ref), 1e-13) << integrator;
@@ -266,7 +266,7 @@ TEST(PairDpdFpm, WriteDataRoundTripsPerPairSettings)
     l.cmd("write_data " + data + " pair ij");
   }
   Lammps l;
-  l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
+  l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
           "pair_style dpd/fpm 1.0 1.0 31", "read_data " + data, "timestep 0.01",
           "compute virial all pressure NULL virial", "compute tq all property/atom tqx tqy tqz"});
   const Snapshot back = snapshot(l);
@@ -310,7 +310,7 @@ TEST(PairDpdFpm, ForcesAndTorquesAgreeAcrossRankCountsAndNewton)
       if (ranks > etdtest::world_size()) continue;
       results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
         l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "newton " + newton,
-                "comm_modify vel yes", "read_data " + data, "set group all mass 1.0",
+                "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + data, "set group all mass 1.0",
                 "timestep 0.005", "pair_style dpd/fpm 1.0 1.0 2718",
                 "pair_coeff * * 25 4.5 4.5 0.5", "pair_coeff 1 2 25 3.5 5.5 0.5",
                 "compute tq all property/atom tqx tqy tqz", "fix 1 all nve/sphere",
@@ -371,7 +371,7 @@ TEST(PairDpdFpm, BadInputGivesClearErrors)
   {
     Lammps l;
     etdtest::write_random_data(etdtest::work_file("dpd_fpm_atomic.data"), 100, 4.0, 3, 1, 1.0);
-    l.cmds({"units lj", "atom_style atomic", "comm_modify vel yes",
+    l.cmds({"units lj", "atom_style atomic", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
             "read_data " + etdtest::work_file("dpd_fpm_atomic.data")});
     const std::string message =
         l.error_of({"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5", "run 0"});
@@ -380,7 +380,7 @@ TEST(PairDpdFpm, BadInputGivesClearErrors)
   {
     Lammps l;
     const std::string message = l.error_of(
-        {"units lj", "atom_style sphere", "atom_modify id no", "comm_modify vel yes",
+        {"units lj", "atom_style sphere", "atom_modify id no", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
          "region box block 0 4 0 4 0 4", "create_box 1 box", "create_atoms 1 random 50 3 box",
          "pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5", "run 0"});
     EXPECT_NE(message.find("requires atom IDs"), std::string::npos) << message;

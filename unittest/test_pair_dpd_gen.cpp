@@ -19,7 +19,7 @@ const std::string DATA = etdtest::work_file("dpd_gen_config.data");
 void setup_box(Lammps &l, const std::string &newton = "on")
 {
   etdtest::write_random_data(DATA, 648, 6.0, 4711, 2, 1.5);
-  l.cmds({"units lj", "atom_modify map array", "newton " + newton, "comm_modify vel yes",
+  l.cmds({"units lj", "atom_modify map array", "newton " + newton, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
           "read_data " + DATA, "mass * 1.0", "timestep 0.01", "thermo_modify norm no",
           "compute virial all pressure NULL virial"});
 }
@@ -119,7 +119,7 @@ TEST(PairDpdGen, SeparateCutoffsActSeparately)
   // two atoms with relative velocity: at rcC < r < rcD only D and R act, at rcD < r < rcC only C
   for (int variant = 0; variant < 2; variant++) {
     Lammps l;
-    l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "region box block 0 10 0 10 0 10",
+    l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "region box block 0 10 0 10 0 10",
             "create_box 1 box", "create_atoms 1 single 5 5 5", "create_atoms 1 single 6.2 5 5",
             "mass 1 1.0", "velocity all set 0.3 0.2 0.1", "group first id 1",
             "velocity first set -0.5 0.0 0.0", "timestep 0.01",
@@ -147,7 +147,7 @@ TEST(PairDpdGen, RandomForcesSumToZeroAndHaveTheRightVariance)
 {
   // 400 isolated pairs at r = 0.4 with zero relative velocity: F = sigma w_R theta / sqrt(dt)
   Lammps l;
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "region box block 0 40 0 40 0 20",
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "region box block 0 40 0 40 0 20",
           "create_box 1 box", "mass 1 1.0", "timestep 0.004"});
   for (int i = 0; i < 20; i++)
     for (int j = 0; j < 20; j++) {
@@ -205,7 +205,7 @@ TEST(PairDpdGen, RestartContinuesExactly)
     v_ref = l.gather("v");
   }
   Lammps l;
-  l.cmds({"read_restart " + restart, "comm_modify vel yes", "timestep 0.01", "fix 1 all nve", "run 20"});
+  l.cmds({"read_restart " + restart, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "timestep 0.01", "fix 1 all nve", "run 20"});
   EXPECT_LT(max_rel_diff(l.gather("x"), x_ref), 1e-13);
   EXPECT_LT(max_rel_diff(l.gather("v"), v_ref), 1e-13);
 }
@@ -223,7 +223,7 @@ TEST(PairDpdGen, WriteDataRoundTripsPerPairSettings)
     f_ref = l.gather("f");
   }
   Lammps l;
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "pair_style dpd/gen 1.0 1.0 31",
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "pair_style dpd/gen 1.0 1.0 31",
           "read_data " + data, "timestep 0.01", "run 0 post no"});
   EXPECT_LT(max_rel_diff(l.gather("f"), f_ref), 1e-13);
 }

@@ -22,7 +22,7 @@ double max_abs_diff(const std::vector<double> &a, const std::vector<double> &b)
 
 std::vector<std::string> fluid(const std::string &newton, const std::string &data = DATA)
 {
-  return {"units lj", "atom_modify map array", "newton " + newton, "comm_modify vel yes",
+  return {"units lj", "atom_modify map array", "newton " + newton, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
           "read_data " + data, "mass 1 0.01", "mass 2 1.0", "timestep 0.001",
           "pair_style dpd/gen 1.0 1.0 2718", "pair_coeff 1 1 18.75 4.5 0.5",
           "pair_coeff 2 2 25 4.5 2.0", "pair_coeff 1 2 1750 20.48 0.25 1.0 cut_d 1.5 exp_c 0.5"};

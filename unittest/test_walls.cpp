@@ -33,7 +33,7 @@ void empty_box(Lammps &l)
 void pipe_fluid(Lammps &l, double radius, const std::string &integrator)
 {
   const std::string R = std::to_string(radius);
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "boundary p p p",
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "boundary p p p",
           "region box block 0 6 -4 4 -4 4", "create_box 1 box",
           "region pipe cylinder x 0 0 " + R + " INF INF",
           "create_atoms 1 random " + std::to_string(static_cast<int>(4 * 6 * M_PI * radius * radius)) +
@@ -91,7 +91,7 @@ TEST(WallCylinderBounce, NoAtomLeavesADrivenPipe)
 TEST(WallCylinderBounce, NoAtomEntersAnObstacle)
 {
   Lammps l;
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "region box block 0 6 0 6 0 4",
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "region box block 0 6 0 6 0 4",
           "create_box 1 box", "region rod cylinder z 3 3 1.0 INF INF side out",
           "create_atoms 1 random 540 771 rod", "mass 1 0.01", "velocity all create 1.0 99 mom yes",
           "pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 18.75 4.5 0.5", "timestep 0.001",
@@ -116,7 +116,7 @@ std::pair<double, long> couette_cell(bool with_reflect, int steps, double *redra
                                      const std::string &scheme = "diagonal")
 {
   Lammps l;
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "boundary p p f",
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "boundary p p f",
           "region box block 0 4 0 4 -6 6 units box", "create_box 3 box", "lattice fcc 4.0 origin 0 0 0.25",
           "region fluid block INF INF INF INF -3 3 units box", "region lo block INF INF INF INF -4.5 -3 units box",
           "region hi block INF INF INF INF 3 4.5 units box", "create_atoms 1 region fluid",
@@ -264,7 +264,7 @@ TEST(Walls, TrajectoriesAgreeAcrossRankCounts)
   std::vector<std::vector<double>> results;
   for (int ranks : {1, 2, 4})
     results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
-      l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "read_data " + DATA,
+      l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + DATA,
               "mass 1 0.01", "timestep 0.001", "pair_style dpd/gen 1.0 1.0 2718",
               "pair_coeff 1 1 18.75 4.5 0.5", "fix 1 all etd",
               "fix layer all wall/thermal/layer 77 zlo 1.0 0.8 1.0 2.0 0.0 0.0 zhi 6.2 0.8 1.0 -2.0 0.0 0.0",

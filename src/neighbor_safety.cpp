@@ -1,0 +1,154 @@
+// ETD-DPD: fix etd and LAMMPS's neighbor-list settings (neighbor_safety.h).
+#include "neighbor_safety.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix.h"
+#include "neighbor.h"
+#include "update.h"
+#include "utils.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <mpi.h>
+
+using namespace LAMMPS_NS;
+
+namespace etd {
+
+void NeighborSafety::check_settings(LAMMPS *lmp, Fix *fix, bool inertial) const
+{
+  Neighbor *neighbor = lmp->neighbor;
+  // every step: checked (check yes) or rebuilt (check no)
+  if (neighbor->every == 1 && neighbor->delay == 0) return;
+  const std::string settings = fmt::format("neigh_modify every {} delay {} check {}", neighbor->every,
+                                           neighbor->delay, neighbor->dist_check ? "yes" : "no");
+  if (!inertial)
+    lmp->error->all(FLERR, "Fix {} with overdamped yes: {} leaves atoms unchecked between neighbor "
+                    "list builds, and a zero-mass step has no speed to bound how far they go; use "
+                    "neigh_modify every 1 delay 0 check yes", fix->id, settings);
+  double **v = lmp->atom->v;
+  const int *mask = lmp->atom->mask;
+  double local_max = 0.0, max_sq = 0.0;
+  for (int i = 0; i < lmp->atom->nlocal; i++)
+    if (mask[i] & fix->groupbit)
+      local_max = std::max(local_max, v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+  MPI_Allreduce(&local_max, &max_sq, 1, MPI_DOUBLE, MPI_MAX, lmp->world);
+  const double max_speed = std::sqrt(max_sq);
+  const double dt = lmp->update->dt;
+  if (settings_outrun_skin(neighbor->every, neighbor->delay, dt, max_speed, neighbor->skin))
+    lmp->error->all(FLERR, "Fix {}: {} lets atoms outrun the neighbor skin: the fastest atom moves "
+                    "{:.3g} in the {} steps between checks at timestep {:.3g}, more than half the "
+                    "skin ({:.3g}); use neigh_modify every 1 delay 0 check yes", fix->id, settings,
+                    unchecked_steps(neighbor->every, neighbor->delay) * dt * max_speed,
+                    unchecked_steps(neighbor->every, neighbor->delay), dt, 0.5 * neighbor->skin);
+}
+
+void NeighborSafety::start_run(LAMMPS *lmp)
+{
+  danger_at_start = lmp->neighbor->ndanger;
+  outruns = 0;
+}
+
+void NeighborSafety::record_build_positions(LAMMPS *lmp)
+{
+  const int nlocal = lmp->atom->nlocal;
+  double **x = lmp->atom->x;
+  build_positions.resize(3 * nlocal);
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < 3; k++) build_positions[3 * i + k] = x[i][k];
+}
+
+void NeighborSafety::largest_displacements(LAMMPS *lmp, int groupbit, double top[2]) const
+{
+  top[0] = top[1] = 0.0;
+  const int nlocal = lmp->atom->nlocal;
+  if (static_cast<int>(build_positions.size()) != 3 * nlocal) return;
+  double **x = lmp->atom->x;
+  const int *mask = lmp->atom->mask;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double *x0 = &build_positions[3 * i];
+    const double dx = x[i][0] - x0[0], dy = x[i][1] - x0[1], dz = x[i][2] - x0[2];
+    const double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+    if (d > top[0]) {
+      top[1] = top[0];
+      top[0] = d;
+    } else if (d > top[1]) {
+      top[1] = d;
+    }
+  }
+}
+
+bool NeighborSafety::beyond_half_skin(LAMMPS *lmp, int groupbit, const std::vector<double> &lead) const
+{
+  const int nlocal = lmp->atom->nlocal;
+  int local = 0, any = 0;
+  if (static_cast<int>(build_positions.size()) == 3 * nlocal) {
+    double **x = lmp->atom->x;
+    const int *mask = lmp->atom->mask;
+    const double trigger_sq = 0.25 * lmp->neighbor->skin * lmp->neighbor->skin;
+    for (int i = 0; i < nlocal && !local; i++) {
+      if (!(mask[i] & groupbit)) continue;
+      double dsq = 0.0;
+      for (int k = 0; k < 3; k++) {
+        const double d = x[i][k] + lead[3 * i + k] - build_positions[3 * i + k];
+        dsq += d * d;
+      }
+      if (dsq > trigger_sq) local = 1;
+    }
+  }
+  MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, lmp->world);
+  return any;
+}
+
+namespace {
+// MPI_Op over records of 3 doubles: {flag: max, two largest values}
+void flag_and_top_two(void *in, void *inout, int *len, MPI_Datatype *)
+{
+  const double *a = static_cast<const double *>(in);
+  double *b = static_cast<double *>(inout);
+  for (int n = 0; n + 2 < *len; n += 3) {
+    b[n] = std::max(a[n], b[n]);
+    const double values[4] = {a[n + 1], a[n + 2], b[n + 1], b[n + 2]};
+    double first = 0.0, second = 0.0;
+    for (double v : values) {
+      if (v > first) {
+        second = first;
+        first = v;
+      } else if (v > second) {
+        second = v;
+      }
+    }
+    b[n + 1] = first;
+    b[n + 2] = second;
+  }
+}
+}    // namespace
+
+void NeighborSafety::reduce_with_flag(const double local[3], double global[3], MPI_Comm comm)
+{
+  static MPI_Op op = MPI_OP_NULL;
+  if (op == MPI_OP_NULL) MPI_Op_create(flag_and_top_two, 1, &op);
+  MPI_Allreduce(const_cast<double *>(local), global, 3, MPI_DOUBLE, op, comm);
+}
+
+void NeighborSafety::count_if_outrun(LAMMPS *lmp, const double top[2])
+{
+  if (top[0] + top[1] > lmp->neighbor->skin) outruns++;
+}
+
+void NeighborSafety::end_run(LAMMPS *lmp, const char *fix_id) const
+{
+  const bigint dangerous = lmp->neighbor->ndanger - danger_at_start;
+  if ((dangerous == 0 && outruns == 0) || lmp->comm->me != 0) return;
+  lmp->error->warning(FLERR, "Fix {}: {} dangerous neighbor list builds in this run, and {} friction "
+                      "steps at positions two atoms could have reached unlisted (their displacements "
+                      "since the list was built add up to more than the skin): pairs may have been missed. Use "
+                      "neigh_modify every 1 delay 0 check yes, a larger skin (neighbor command) or "
+                      "a smaller timestep", fix_id, dangerous, outruns);
+}
+
+}    // namespace etd

@@ -1,0 +1,73 @@
+// ETD-DPD: fix etd and LAMMPS's neighbor-list settings.
+//
+// The package's integrators exist to take steps at which atoms travel a sizeable part of the
+// skin per step. LAMMPS rebuilds the neighbor lists only after 'neigh_modify delay' steps and
+// then every 'every' steps; in between, an atom that has moved more than half the skin can
+// miss a partner, and nothing tells the user (29Sep2021 defaults to delay 10). So:
+//  - init: an ERROR naming neigh_modify where the settings leave atoms unchecked for longer
+//    than it takes the fastest atom, at the current step, to cover half the skin (the
+//    zero-mass scheme has no speed to bound: it needs every 1 delay 0 check yes);
+//  - during the run (implicit scheme): its friction step works at half-drifted positions,
+//    half a step beyond where LAMMPS checked the list, so the fix asks for a rebuild one step
+//    early where an atom would be more than half the skin out there;
+//  - end of run: a WARNING where the run had dangerous builds (LAMMPS's count), or where the
+//    implicit scheme's friction step, taken at half-drifted positions, found an atom more than
+//    half the skin from where the list was built.
+#ifndef ETD_NEIGHBOR_SAFETY_H
+#define ETD_NEIGHBOR_SAFETY_H
+
+#include "lmptype.h"
+
+#include <mpi.h>
+
+#include <vector>
+
+namespace LAMMPS_NS {
+class Fix;
+class LAMMPS;
+}    // namespace LAMMPS_NS
+
+namespace etd {
+
+// The number of steps LAMMPS may go between two looks at the atoms' displacements.
+inline int unchecked_steps(int every, int delay) { return every > delay ? every : delay; }
+
+// Whether atoms moving at most max_speed can cover half the skin within those steps.
+inline bool settings_outrun_skin(int every, int delay, double dt, double max_speed, double skin)
+{
+  return unchecked_steps(every, delay) * dt * max_speed > 0.5 * skin;
+}
+
+class NeighborSafety {
+ public:
+  // init(): ERROR if the settings are unsafe for the fix's group at this step. inertial:
+  // velocities bound the displacement; otherwise every step must be checked.
+  void check_settings(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::Fix *fix, bool inertial) const;
+  // setup(): remember LAMMPS's count of dangerous builds and forget the last run's outruns
+  void start_run(LAMMPS_NS::LAMMPS *lmp);
+  // post_neighbor(): the positions the new list was built from (owned atoms)
+  void record_build_positions(LAMMPS_NS::LAMMPS *lmp);
+  // The two largest displacements of the group's owned atoms on this rank since the list was
+  // built, into top[0] >= top[1].
+  void largest_displacements(LAMMPS_NS::LAMMPS *lmp, int groupbit, double top[2]) const;
+  // Allreduce of {flag, top two}: the flag by max, and the two largest displacements of all
+  // ranks (one reduction for the caller's flag and this check)
+  static void reduce_with_flag(const double local[3], double global[3], MPI_Comm comm);
+  // Whether an owned atom of the group, moved on by lead (3 values per owned atom), would be
+  // more than half the skin from where the list was built. Collective.
+  bool beyond_half_skin(LAMMPS_NS::LAMMPS *lmp, int groupbit, const std::vector<double> &lead) const;
+  // LAMMPS's own test (Neighbor::check_distance): two atoms may have come within the cutoff
+  // unlisted once their two largest displacements add up to more than the skin; counted.
+  void count_if_outrun(LAMMPS_NS::LAMMPS *lmp, const double top[2]);
+  // post_run(): the WARNING, once, from rank 0
+  void end_run(LAMMPS_NS::LAMMPS *lmp, const char *fix_id) const;
+
+ private:
+  LAMMPS_NS::bigint danger_at_start = 0;
+  long outruns = 0;
+  std::vector<double> build_positions;
+};
+
+}    // namespace etd
+
+#endif
