@@ -127,6 +127,19 @@ void FixETDImplicit::init()
     error->all(FLERR, "Fix etd does not support run_style respa");
   if (atom->tag_enable == 0)
     error->all(FLERR, "Fix etd scheme implicit requires atom IDs (its noise is keyed on them)");
+  // Atoms outside the group enter the solve with their velocities held: walls, obstacles and
+  // atoms moved by fix move. Another integrator moving them (fix nve, fix rigid/small) would
+  // see no DPD friction or noise on them: the pair styles leave both to this fix, whose solve
+  // does not give the reaction back to atoms it does not integrate, nor treat pairs of them.
+  for (int f = 0; f < modify->nfix; f++) {
+    Fix *other = modify->fix[f];
+    if (other == this || !other->time_integrate || utils::strmatch(other->style, "^move")) continue;
+    error->all(FLERR, "Fix etd scheme implicit cannot be combined with fix {} ({}): the DPD friction "
+               "and noise of the atoms it integrates would be lost (the pair style leaves them to "
+               "the implicit scheme, which holds atoms outside its group at their velocities). "
+               "Integrate every DPD atom with fix etd scheme implicit, or use fix etd scheme "
+               "diagonal, whose pair forces stay complete", other->id, other->style);
+  }
   providers = etd::find_dpd_providers(lmp);
   if (providers.empty())
     error->all(FLERR, "Fix etd requires pair style dpd/gen or dpd/fpm (alone or in pair "

@@ -164,3 +164,22 @@ TEST_F(Ranks, ImplicitTrajectoryAgreesWithSlabsThinnerThanTwoCutoffs)
   if (etdtest::world_rank() != 0) return;
   expect_agreement(results, 0, 3, 1e-7, "thin slabs");
 }
+
+// Steady shear through fix deform ... remap v in a triclinic box: the images across the sheared
+// boundary move with their owners' velocities plus the box's rate, whether the owner is on this
+// rank or another (the fix's partner exchange). Inertial and overdamped, 1, 2 and 4 ranks.
+TEST_F(Ranks, ImplicitTrajectoryUnderShearAgreesAcrossRankCounts)
+{
+  std::vector<std::vector<double>> results;
+  for (const std::string variant : {"", " overdamped yes"})
+    for (int ranks : {1, 2, 4})
+      results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
+        l.cmds(fluid("on"));
+        l.cmds({"change_box all triclinic", "fix 1 all etd scheme implicit tol 1e-10" + variant,
+                "fix 2 all deform 1 xy erate 2.0 xz erate 1.0 yz erate -1.0 remap v", "run 10 post no"});
+        return velocities_and_positions(l);
+      }));
+  if (etdtest::world_rank() != 0) return;
+  expect_agreement(results, 0, 3, 1e-7, "inertial under shear");
+  expect_agreement(results, 3, 3, 1e-7, "overdamped under shear");
+}
