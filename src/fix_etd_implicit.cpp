@@ -287,8 +287,8 @@ void FixETDImplicit::initial_integrate(int)
 
 // The next friction step happens at x + h/2 (v + h F/m) (the next step's first kick and half
 // drift; the last force evaluation stands in for the coming one), or overdamped near x + h/2 v;
-// LAMMPS's check after this looks only at x. Where an atom would be more than half the skin
-// from its list there, the list is rebuilt now.
+// LAMMPS's check after this looks only at x. Where two atoms could be within the cutoff
+// unlisted there, the list is rebuilt now.
 void FixETDImplicit::post_integrate()
 {
   const int nlocal = atom->nlocal;
@@ -303,7 +303,7 @@ void FixETDImplicit::post_integrate()
     const double kick = overdamped ? 0.0 : dt / (rmass ? rmass[i] : mass[type[i]]);
     for (int k = 0; k < 3; k++) lead[3 * i + k] = 0.5 * dt * (v[i][k] + kick * f[i][k]);
   }
-  if (neighbor_safety.beyond_half_skin(lmp, groupbit, lead)) next_reneighbor = update->ntimestep;
+  if (neighbor_safety.could_outrun(lmp, groupbit, lead)) next_reneighbor = update->ntimestep;
 }
 
 void FixETDImplicit::final_integrate()

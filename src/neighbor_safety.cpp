@@ -61,7 +61,8 @@ void NeighborSafety::record_build_positions(LAMMPS *lmp)
     for (int k = 0; k < 3; k++) build_positions[3 * i + k] = x[i][k];
 }
 
-void NeighborSafety::largest_displacements(LAMMPS *lmp, int groupbit, double top[2]) const
+void NeighborSafety::largest_displacements(LAMMPS *lmp, int groupbit, double top[2],
+                                           const std::vector<double> *lead) const
 {
   top[0] = top[1] = 0.0;
   const int nlocal = lmp->atom->nlocal;
@@ -70,9 +71,12 @@ void NeighborSafety::largest_displacements(LAMMPS *lmp, int groupbit, double top
   const int *mask = lmp->atom->mask;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    const double *x0 = &build_positions[3 * i];
-    const double dx = x[i][0] - x0[0], dy = x[i][1] - x0[1], dz = x[i][2] - x0[2];
-    const double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+    double dsq = 0.0;
+    for (int k = 0; k < 3; k++) {
+      const double d = x[i][k] + (lead ? (*lead)[3 * i + k] : 0.0) - build_positions[3 * i + k];
+      dsq += d * d;
+    }
+    const double d = std::sqrt(dsq);
     if (d > top[0]) {
       top[1] = top[0];
       top[0] = d;
@@ -82,26 +86,12 @@ void NeighborSafety::largest_displacements(LAMMPS *lmp, int groupbit, double top
   }
 }
 
-bool NeighborSafety::beyond_half_skin(LAMMPS *lmp, int groupbit, const std::vector<double> &lead) const
+bool NeighborSafety::could_outrun(LAMMPS *lmp, int groupbit, const std::vector<double> &lead) const
 {
-  const int nlocal = lmp->atom->nlocal;
-  int local = 0, any = 0;
-  if (static_cast<int>(build_positions.size()) == 3 * nlocal) {
-    double **x = lmp->atom->x;
-    const int *mask = lmp->atom->mask;
-    const double trigger_sq = 0.25 * lmp->neighbor->skin * lmp->neighbor->skin;
-    for (int i = 0; i < nlocal && !local; i++) {
-      if (!(mask[i] & groupbit)) continue;
-      double dsq = 0.0;
-      for (int k = 0; k < 3; k++) {
-        const double d = x[i][k] + lead[3 * i + k] - build_positions[3 * i + k];
-        dsq += d * d;
-      }
-      if (dsq > trigger_sq) local = 1;
-    }
-  }
-  MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, lmp->world);
-  return any;
+  double local[3] = {0.0}, global[3];
+  largest_displacements(lmp, groupbit, local + 1, &lead);
+  reduce_with_flag(local, global, lmp->world);
+  return global[1] + global[2] > lmp->neighbor->skin;
 }
 
 namespace {

@@ -9,7 +9,7 @@
 //    zero-mass scheme has no speed to bound: it needs every 1 delay 0 check yes);
 //  - during the run (implicit scheme): its friction step works at half-drifted positions,
 //    half a step beyond where LAMMPS checked the list, so the fix asks for a rebuild one step
-//    early where an atom would be more than half the skin out there;
+//    early where two atoms could reach each other unlisted there;
 //  - end of run: a WARNING where the run had dangerous builds (LAMMPS's count), or where the
 //    implicit scheme's friction step, taken at half-drifted positions, found an atom more than
 //    half the skin from where the list was built.
@@ -48,14 +48,16 @@ class NeighborSafety {
   // post_neighbor(): the positions the new list was built from (owned atoms)
   void record_build_positions(LAMMPS_NS::LAMMPS *lmp);
   // The two largest displacements of the group's owned atoms on this rank since the list was
-  // built, into top[0] >= top[1].
-  void largest_displacements(LAMMPS_NS::LAMMPS *lmp, int groupbit, double top[2]) const;
+  // built (each moved on by lead, 3 values per owned atom, if given), into top[0] >= top[1].
+  void largest_displacements(LAMMPS_NS::LAMMPS *lmp, int groupbit, double top[2],
+                             const std::vector<double> *lead = nullptr) const;
   // Allreduce of {flag, top two}: the flag by max, and the two largest displacements of all
   // ranks (one reduction for the caller's flag and this check)
   static void reduce_with_flag(const double local[3], double global[3], MPI_Comm comm);
-  // Whether an owned atom of the group, moved on by lead (3 values per owned atom), would be
-  // more than half the skin from where the list was built. Collective.
-  bool beyond_half_skin(LAMMPS_NS::LAMMPS *lmp, int groupbit, const std::vector<double> &lead) const;
+  // Whether two atoms of the group, each moved on by lead (3 values per owned atom), could
+  // then be within the cutoff unlisted: their displacements since the list was built add up to
+  // more than the skin (the test below, ahead of time). Collective.
+  bool could_outrun(LAMMPS_NS::LAMMPS *lmp, int groupbit, const std::vector<double> &lead) const;
   // LAMMPS's own test (Neighbor::check_distance): two atoms may have come within the cutoff
   // unlisted once their two largest displacements add up to more than the skin; counted.
   void count_if_outrun(LAMMPS_NS::LAMMPS *lmp, const double top[2]);
