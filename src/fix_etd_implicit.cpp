@@ -792,7 +792,7 @@ void FixETDImplicit::friction_noise_step()
   const double dof = sums[COMPONENTS] - 3.0;
   friction_step_temperature = dof > 0.0 ? twice_kinetic / (force->boltz * dof) * force->mvv2e : 0.0;
 
-  if (split_requested || thermo_virial) {
+  if (split_requested || virial_wanted()) {
     // the Crank-Nicolson mean velocity (v + v')/2; u holds v in the group and 2 v outside it
     std::vector<double> &mean = work.mean;
     mean.resize(dofs * nlocal);
@@ -810,7 +810,19 @@ void FixETDImplicit::record_friction_forces(const std::vector<double> &mean_velo
 {
   gather_operand(mean_velocity.data(), false);
   if (split_requested) record_split(random_force, random_scale);
-  if (thermo_virial) tally_friction_virial();
+  if (virial_wanted()) tally_friction_virial();
+}
+
+// Whether a pressure or stress compute is due at this step (as LAMMPS's integrator decides
+// whether forces tally their virial, Integrate::ev_set, which runs only after this fix's step)
+bool FixETDImplicit::virial_wanted() const
+{
+  if (!thermo_virial) return false;
+  for (int c = 0; c < modify->ncompute; c++) {
+    Compute *compute = modify->compute[c];
+    if ((compute->pressflag || compute->pressatomflag) && compute->matchstep(update->ntimestep)) return true;
+  }
+  return false;
 }
 
 // Virial of the step's dissipative and random pair forces, sum over pairs of r_ij F_ij (F on i,
@@ -936,7 +948,7 @@ void FixETDImplicit::overdamped_step()
           x[i][k] += h * predicted[3 * i + k];
           v[i][k] = predicted[3 * i + k];
         }
-    if (split_requested || thermo_virial) overdamped_split(predicted, impulse);
+    if (split_requested || virial_wanted()) overdamped_split(predicted, impulse);
     return;
   }
   for (int i = 0; i < nlocal; i++)
@@ -956,7 +968,7 @@ void FixETDImplicit::overdamped_step()
         x[i][k] += h * solution[3 * i + k] - 0.5 * h * predicted[3 * i + k];
         v[i][k] = solution[3 * i + k];
       }
-  if (split_requested || thermo_virial) overdamped_split(solution, impulse);
+  if (split_requested || virial_wanted()) overdamped_split(solution, impulse);
 }
 
 // D = -G v with G of the last solve (atoms outside the group at their own velocity), R = the

@@ -140,6 +140,7 @@ class FixETDImplicit : public Fix {
                               const std::vector<double> &random_force, double random_scale);
   bool peratom_virial;    // a compute stress/atom exists: fill vatom too
   void tally_friction_virial();
+  bool virial_wanted() const;
 
   int last_iterations;
   double last_residual;
