@@ -104,7 +104,8 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
   partners.reset(new etd::PartnerExchange(world));
 
   // per-atom split for compute dpd/split, kept with the atoms when they migrate or are sorted
-  maxexchange = 6;
+  maxexchange = 12;    // the split and the per-atom virial (vatom), which must travel too:
+                       // the atoms migrate and are sorted after the step that tallied them
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
 }
@@ -834,12 +835,7 @@ void FixETDImplicit::tally_friction_virial()
   const int nlocal = atom->nlocal;
   const double random_scale = 1.0 / std::sqrt(dt);
   for (int k = 0; k < 6; k++) virial[k] = 0.0;
-  if (peratom_virial) {
-    if (maxvatom < atom->nmax) {
-      maxvatom = atom->nmax;
-      memory->destroy(vatom);
-      memory->create(vatom, maxvatom, 6, "etd:vatom");
-    }
+  if (peratom_virial) {    // (vatom grows with the atoms: grow_arrays)
     for (int i = 0; i < nlocal; i++)
       for (int k = 0; k < 6; k++) vatom[i][k] = 0.0;
   }
@@ -1057,31 +1053,42 @@ void FixETDImplicit::unpack_forward_comm(int n, int first, double *buf)
 void FixETDImplicit::grow_arrays(int nmax)
 {
   memory->grow(split, nmax, 6, "etd:split");
+  memory->grow(vatom, nmax, 6, "etd:vatom");
   for (int i = split_rows; i < nmax; i++)
-    for (int k = 0; k < 6; k++) split[i][k] = 0.0;
+    for (int k = 0; k < 6; k++) split[i][k] = vatom[i][k] = 0.0;
   split_rows = std::max(split_rows, nmax);
+  maxvatom = split_rows;
 }
 
 void FixETDImplicit::copy_arrays(int i, int j, int)
 {
-  for (int k = 0; k < 6; k++) split[j][k] = split[i][k];
+  for (int k = 0; k < 6; k++) {
+    split[j][k] = split[i][k];
+    vatom[j][k] = vatom[i][k];
+  }
 }
 
 int FixETDImplicit::pack_exchange(int i, double *buf)
 {
-  for (int k = 0; k < 6; k++) buf[k] = split[i][k];
-  return 6;
+  for (int k = 0; k < 6; k++) {
+    buf[k] = split[i][k];
+    buf[6 + k] = vatom[i][k];
+  }
+  return 12;
 }
 
 int FixETDImplicit::unpack_exchange(int nlocal, double *buf)
 {
-  for (int k = 0; k < 6; k++) split[nlocal][k] = buf[k];
-  return 6;
+  for (int k = 0; k < 6; k++) {
+    split[nlocal][k] = buf[k];
+    vatom[nlocal][k] = buf[6 + k];
+  }
+  return 12;
 }
 
 double FixETDImplicit::memory_usage()
 {
-  return sizeof(double) * 6 * split_rows + sizeof(etd::FrictionPair) * pairs.capacity() +
+  return sizeof(double) * 12 * split_rows + sizeof(etd::FrictionPair) * pairs.capacity() +
       sizeof(double) * pair_noise.capacity() +
       sizeof(etd::FpmFrictionPair) * fpm_pairs.capacity() + sizeof(double) * fpm_noise.capacity() +
       sizeof(double) * (operand.capacity() + diagonal.capacity()) +

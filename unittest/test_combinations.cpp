@@ -291,3 +291,25 @@ TEST_F(Combinations, GreenKuboStressIncludesTheFrictionAndNoise)
     else EXPECT_GT(fix_share, 0.0) << s.name;
   }
 }
+
+// compute stress/atom with the implicit schemes: the fix's per-atom virial adds up to its global
+// virial (pairs that cross ranks are split between the ranks' atoms), on any number of ranks:
+// sum_i S_i = -P V for the fix's share (compute pressure ... fix, stress/atom ... fix)
+TEST_F(Combinations, StressPerAtomAddsUpToTheFixVirial)
+{
+  for (const Scheme &s : SCHEMES) {
+    if (s.name == "diagonal") continue;    // (no fix virial: the pair style's forces)
+    Lammps l;
+    l.cmds(system(s));
+    l.cmds({"velocity all create 1.0 4 mom yes dist gaussian", "fix 1 all " + s.fix,
+            "compute pfix all pressure NULL fix", "compute sfix all stress/atom NULL fix",
+            "compute ssum all reduce sum c_sfix[1] c_sfix[2] c_sfix[3] c_sfix[4] c_sfix[5] c_sfix[6]",
+            "variable check equal c_pfix[4]+c_ssum[4]/vol", "thermo_style custom step c_pfix[1] c_pfix[4] c_ssum[1] c_ssum[4]",
+            "thermo 5", "run 5 post no"});
+    for (int k = 0; k < 6; k++) {
+      const double global = l.compute_vector("pfix", k), summed = -l.compute_vector("ssum", k) / 216.0;
+      EXPECT_NEAR(summed, global, 1e-9 * (1.0 + std::fabs(global))) << s.name << " component " << k;
+      if (k == 0) EXPECT_NE(global, 0.0) << s.name;
+    }
+  }
+}
