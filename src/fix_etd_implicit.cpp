@@ -207,7 +207,14 @@ void FixETDImplicit::init()
 
 void FixETDImplicit::init_list(int, NeighList *ptr) { list = ptr; }
 
-void FixETDImplicit::setup(int) { neighbor_safety.start_run(lmp); }
+void FixETDImplicit::setup(int)
+{
+  neighbor_safety.start_run(lmp);
+  // no friction step yet: a pressure evaluated at the set-up step has no friction virial
+  for (int k = 0; k < 6; k++) virial[k] = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int k = 0; k < 6; k++) vatom[i][k] = 0.0;
+}
 void FixETDImplicit::setup_post_neighbor() { neighbor_safety.record_build_positions(lmp); }
 void FixETDImplicit::post_neighbor() { neighbor_safety.record_build_positions(lmp); }
 void FixETDImplicit::post_run() { neighbor_safety.end_run(lmp, id); }

@@ -278,8 +278,10 @@ TEST_F(Combinations, GreenKuboStressIncludesTheFrictionAndNoise)
     Lammps l;
     l.cmds(system(s));
     l.cmds({"velocity all create 1.0 4 mom yes dist gaussian", "fix 1 all " + s.fix,
-            "compute p all pressure thermo_temp", "compute pfix all pressure NULL fix",
-            "variable pxy equal c_p[4]", "variable fxy equal c_pfix[4]",
+            "compute p all pressure thermo_temp", "compute pfix all pressure NULL fix", "run 0 post no"});
+    // before any friction step the fix has no virial (it once read uninitialised memory here)
+    for (int k = 0; k < 6; k++) EXPECT_EQ(l.compute_vector("pfix", k), 0.0) << s.name << " at set-up";
+    l.cmds({"variable pxy equal c_p[4]", "variable fxy equal c_pfix[4]",
             "fix gk all ave/correlate 1 20 20 v_pxy type auto ave running",
             "variable fxy2 equal v_fxy^2", "fix spread all ave/time 1 1 1 v_fxy2 ave running",
             "run 100 post no"});
