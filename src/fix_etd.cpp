@@ -14,6 +14,7 @@
 #include "update.h"
 #include "utils.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -31,6 +32,7 @@ FixETD::FixETD(LAMMPS *lmp, int narg, char **arg) :
 {
   time_integrate = 1;
   restart_peratom = 1;
+  create_attribute = 1;    // set_arrays(): new atoms start without order-2 history
   maxexchange = STATE;    // per-atom values this fix adds to each migrating atom
   vector_flag = 1;
   size_vector = 3;
@@ -96,8 +98,41 @@ void FixETD::init()
   neighbor_safety.check_settings(lmp, this, true);
 }
 
-void FixETD::setup(int) { neighbor_safety.start_run(lmp); }
-void FixETD::post_run() { neighbor_safety.end_run(lmp, id); }
+// The order-2 history A_(n-1) belongs to the velocities it was computed with: where they changed
+// between runs (velocity set / scale / create), the first step of the new run extrapolates
+// from a forcing of other velocities, so the history is dropped (that step is order 1). Sum of
+// v^2 over the group at the end of a run and at the start of the next one, to a relative 1e-10
+// (the summation order may differ, the values may not).
+double FixETD::velocity_fingerprint() const
+{
+  double local = 0.0, total = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit)
+      for (int k = 0; k < 3; k++) local += atom->v[i][k] * atom->v[i][k];
+  MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, world);
+  return total;
+}
+
+void FixETD::setup(int)
+{
+  neighbor_safety.start_run(lmp);
+  if (order != 2 || fingerprint_at_end < 0.0) return;
+  const double now = velocity_fingerprint();
+  if (std::fabs(now - fingerprint_at_end) > 1e-10 * std::max(now, fingerprint_at_end))
+    for (int i = 0; i < atom->nlocal; i++) previous_forcing[i][3] = 0.0;
+}
+
+void FixETD::post_run()
+{
+  neighbor_safety.end_run(lmp, id);
+  if (order == 2) fingerprint_at_end = velocity_fingerprint();
+}
+
+// an atom created between runs has no history
+void FixETD::set_arrays(int i)
+{
+  for (int k = 0; k < STATE; k++) previous_forcing[i][k] = 0.0;
+}
 
 void FixETD::reset_dt() { dt = update->dt; }
 

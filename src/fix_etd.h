@@ -20,6 +20,7 @@ class FixETD : public Fix {
   void init() override;
   void setup(int) override;
   void post_run() override;
+  void set_arrays(int) override;
   void initial_integrate(int) override;
   void final_integrate() override;
   void reset_dt() override;
@@ -43,6 +44,8 @@ class FixETD : public Fix {
   bool conserve_momentum;
   double dt;
   etd::NeighborSafety neighbor_safety;
+  double fingerprint_at_end = -1.0;    // order 2: velocity_fingerprint() at the end of the last run
+  double velocity_fingerprint() const;
   bool needs_random_part() const { return order == 2 || noise == Noise::Exact; }
   void update_angular_velocities();    // pair styles with rotation (dpd/fpm)
   bool rotation_checked = false;
