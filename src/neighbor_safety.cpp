@@ -138,11 +138,14 @@ void NeighborSafety::end_run(LAMMPS *lmp, const char *fix_id) const
 {
   const bigint dangerous = lmp->neighbor->ndanger - danger_at_start;
   if ((dangerous == 0 && outruns == 0) || lmp->comm->me != 0) return;
+  Neighbor *neighbor = lmp->neighbor;
+  const bool every_step = neighbor->every == 1 && neighbor->delay == 0;
   lmp->error->warning(FLERR, "Fix {}: {} dangerous neighbor list builds in this run, and {} friction "
                       "steps at positions two atoms could have reached unlisted (their displacements "
-                      "since the list was built add up to more than the skin): pairs may have been missed. Use "
-                      "neigh_modify every 1 delay 0 check yes, a larger skin (neighbor command) or "
-                      "a smaller timestep", fix_id, dangerous, outruns);
+                      "since the list was built add up to more than the skin {}): pairs may have "
+                      "been missed. Use {}a larger skin (neighbor command) or a smaller timestep",
+                      fix_id, dangerous, outruns, neighbor->skin,
+                      every_step ? "" : "neigh_modify every 1 delay 0 check yes, ");
 }
 
 }    // namespace etd
