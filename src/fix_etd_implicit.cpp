@@ -202,7 +202,7 @@ void FixETDImplicit::init()
   neighbor_safety.check_settings(lmp, this, !overdamped);
   peratom_virial = false;
   for (int c = 0; c < modify->ncompute; c++)
-    if (utils::strmatch(modify->compute[c]->style, "stress/atom")) peratom_virial = true;
+    if (modify->compute[c]->pressatomflag) peratom_virial = true;
 }
 
 void FixETDImplicit::init_list(int, NeighList *ptr) { list = ptr; }
@@ -282,6 +282,7 @@ void FixETDImplicit::drift(double fraction)
 
 void FixETDImplicit::initial_integrate(int)
 {
+  virial_this_step = virial_wanted();
   if (overdamped) {
     overdamped_step();
     return;
@@ -419,7 +420,13 @@ void FixETDImplicit::build_pairs()
   const bool moving_images = domain->deform_vremap;
   image_friction.assign(moving_images ? dofs * nlocal : 0, 0.0);
   auto keep_j = [=](int j) { return j < nlocal; };
+  // j's velocity on top of its owner's (a moving image); zero for owned atoms and resting images
   double offset[3];
+  auto moving_image = [&](int j) {
+    if (j >= nlocal && image_velocity(j, offset)) return true;
+    offset[0] = offset[1] = offset[2] = 0.0;
+    return false;
+  };
   int fixed_partner = 0;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
@@ -451,8 +458,7 @@ void FixETDImplicit::build_pairs()
         if (fc && add_fpm_pair(*fc, i, partner, d, rsq, factor, tag[i], tag[j], step)) {
           if (!i_mobile || !j_mobile) fixed_partner = 1;
           if (moving_images) {
-            if (j < nlocal || !image_velocity(j, offset)) offset[0] = offset[1] = offset[2] = 0.0;
-            else etd::accumulate_fpm_image_offset(fpm_pairs.back(), offset, image_friction.data(), keep_j);
+            if (moving_image(j)) etd::accumulate_fpm_image_offset(fpm_pairs.back(), offset, image_friction.data(), keep_j);
             fpm_offset.insert(fpm_offset.end(), offset, offset + 3);
           }
         }
@@ -478,8 +484,7 @@ void FixETDImplicit::build_pairs()
       if (!i_mobile || !j_mobile) fixed_partner = 1;
       pair_distance.push_back(r);
       if (moving_images) {
-        if (j < nlocal || !image_velocity(j, offset)) offset[0] = offset[1] = offset[2] = 0.0;
-        else etd::accumulate_image_offset(p, offset, image_friction.data(), keep_j, dofs);
+        if (moving_image(j)) etd::accumulate_image_offset(p, offset, image_friction.data(), keep_j, dofs);
         pair_offset.insert(pair_offset.end(), offset, offset + 3);
       }
     }
@@ -800,7 +805,7 @@ void FixETDImplicit::friction_noise_step()
   const double dof = sums[COMPONENTS] - 3.0;
   friction_step_temperature = dof > 0.0 ? twice_kinetic / (force->boltz * dof) * force->mvv2e : 0.0;
 
-  if (split_requested || virial_wanted()) {
+  if (split_requested || virial_this_step) {
     // the Crank-Nicolson mean velocity (v + v')/2; u holds v in the group and 2 v outside it
     std::vector<double> &mean = work.mean;
     mean.resize(dofs * nlocal);
@@ -818,7 +823,7 @@ void FixETDImplicit::record_friction_forces(const std::vector<double> &mean_velo
 {
   gather_operand(mean_velocity.data(), false);
   if (split_requested) record_split(random_force, random_scale);
-  if (virial_wanted()) tally_friction_virial();
+  if (virial_this_step) tally_friction_virial();
 }
 
 // Whether a pressure or stress compute is due at this step (as LAMMPS's integrator decides
@@ -951,7 +956,7 @@ void FixETDImplicit::overdamped_step()
           x[i][k] += h * predicted[3 * i + k];
           v[i][k] = predicted[3 * i + k];
         }
-    if (split_requested || virial_wanted()) overdamped_split(predicted, impulse);
+    if (split_requested || virial_this_step) overdamped_split(predicted, impulse);
     return;
   }
   for (int i = 0; i < nlocal; i++)
@@ -971,7 +976,7 @@ void FixETDImplicit::overdamped_step()
         x[i][k] += h * solution[3 * i + k] - 0.5 * h * predicted[3 * i + k];
         v[i][k] = solution[3 * i + k];
       }
-  if (split_requested || virial_wanted()) overdamped_split(solution, impulse);
+  if (split_requested || virial_this_step) overdamped_split(solution, impulse);
 }
 
 // D = -G v with G of the last solve (atoms outside the group at their own velocity), R = the

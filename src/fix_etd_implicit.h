@@ -138,9 +138,10 @@ class FixETDImplicit : public Fix {
   // remote partners filled here): for compute dpd/split and the virial
   void record_friction_forces(const std::vector<double> &mean_velocity,
                               const std::vector<double> &random_force, double random_scale);
-  bool peratom_virial;    // a compute stress/atom exists: fill vatom too
+  bool peratom_virial;    // a per-atom stress compute exists (stress/atom): fill vatom too
   void tally_friction_virial();
   bool virial_wanted() const;
+  bool virial_this_step = false;    // virial_wanted(), decided once at the start of each step
 
   int last_iterations;
   double last_residual;
