@@ -4,7 +4,7 @@
 # newton settings, run alternately in rounds so that slow spells of a shared machine fall on
 # all of them alike. Prints every round and each variant's minimum and median.
 # Usage: bash bench/alternate.sh RANKS ROUNDS VARIANT ...
-#   VARIANT = PLUGIN.so[:newton]   e.g. /tmp/old.so:on build/etddpd.so:on build/etddpd.so:off
+#   VARIANT = PLUGIN.so[:newton]   e.g. /tmp/old.so:on build/etddpdplugin.so:on build/etddpdplugin.so:off
 # Environment: LMP (default: the lmp of tools/bootstrap.sh), INTEGRATOR (default "etd scheme
 # implicit tol 1e-4 start velocity"), MASS (0.001), DT (0.001).
 set -euo pipefail

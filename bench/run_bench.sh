@@ -12,7 +12,7 @@ mpi_flags=()
 [ "$(id -u)" = 0 ] && mpi_flags+=(--allow-run-as-root)
 for ranks in ${BENCH_RANKS:-1 2}; do
   mpirun "${mpi_flags[@]}" -np $ranks "$prefix/bin/lmp" -in "$here/bench/in.pair_throughput" \
-    -var plugin "$here/build/etddpd.so" -var steps "$steps" -log "$out/log.np$ranks" -screen none
+    -var plugin "$here/build/etddpdplugin.so" -var steps "$steps" -log "$out/log.np$ranks" -screen none
 done
 logs=(); for ranks in ${BENCH_RANKS:-1 2}; do logs+=("$out/log.np$ranks"); done
 /usr/bin/python3 "$here/bench/throughput_table.py" "${logs[@]}"

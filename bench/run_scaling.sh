@@ -8,7 +8,7 @@ steps=${1:-100}
 out="$here/bench/results/scaling"
 mkdir -p "$out"
 for side in 10 20 30 40; do    # 3,000, 24,000, 81,000, 192,000 atoms
-  "$prefix/bin/lmp" -in "$here/bench/in.scaling" -var plugin "$here/build/etddpd.so" -var side $side \
+  "$prefix/bin/lmp" -in "$here/bench/in.scaling" -var plugin "$here/build/etddpdplugin.so" -var side $side \
     -var steps "$steps" -log "$out/log.side$side" -screen none
 done
 /usr/bin/python3 - "$out" <<'PY'

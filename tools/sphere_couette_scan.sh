@@ -7,14 +7,14 @@
 # Runs one LAMMPS job per value in OUTDIR/<scan>_<value>/ (default size: the example's reduced
 # box and length; pass e.g. "-var Lx 40 -var Ly 30 -var H 30 -var equil 60000 -var steps 90000
 # -var block 10000" for the paper's) and prints one table row per run from tools/sphere_couette.py.
-# Environment: LMP (lmp binary), PLUGIN (etddpd.so), RUN_PREFIX (default "nice -n 10").
+# Environment: LMP (lmp binary), PLUGIN (etddpdplugin.so), RUN_PREFIX (default "nice -n 10").
 set -e
 scan=${1:?usage: sphere_couette_scan.sh sigma|a|mass [OUTDIR] [extra -var args]}
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${2:-$root/out/sphere_couette_$scan}
 shift $(( $# >= 2 ? 2 : 1 ))
 LMP=${LMP:-lmp}
-PLUGIN=${PLUGIN:-$root/build/etddpd.so}
+PLUGIN=${PLUGIN:-$root/build/etddpdplugin.so}
 RUN_PREFIX=${RUN_PREFIX:-nice -n 10}
 case $scan in
   sigma) var=colloid_sigma; values="2.8 3.2 3.6 4.0 4.4" ;;

@@ -18,7 +18,7 @@ run() {    # label pair integrator mass dt time
   local label=$1 pair=$2 integrator=$3 mass=$4 dt=$5 time
   time=$(awk "BEGIN { print $6 * $scale }")
   rm -f kbt_blocks.txt
-  if "$prefix/bin/lmp" -in "$here/validation/in.temperature_scan" -var plugin "$here/build/etddpd.so" \
+  if "$prefix/bin/lmp" -in "$here/validation/in.temperature_scan" -var plugin "$here/build/etddpdplugin.so" \
       -var pair "$pair" -var integrator "$integrator" -var dt "$dt" -var mass "$mass" \
       -var time "$time" -var equil "$(awk "BEGIN { print $time / 4 }")" -log none -screen screen.txt \
       >/dev/null 2>&1 && grep -q "kBT=[0-9]" screen.txt; then

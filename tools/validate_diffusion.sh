@@ -13,7 +13,7 @@ out="$here/out/validation_diffusion"; mkdir -p "$out"
 rows=()
 run() {    # mass dt integrator VACF-window VACF-origins [measured eta]
   local dir="$out/m$1_${3%% *}_$2"; mkdir -p "$dir"
-  (cd "$dir" && "$prefix/bin/lmp" -in "$here/validation/in.diffusion" -var plugin "${ETDDPD_PLUGIN:-$here/build/etddpd.so}" \
+  (cd "$dir" && "$prefix/bin/lmp" -in "$here/validation/in.diffusion" -var plugin "${ETDDPD_PLUGIN:-$here/build/etddpdplugin.so}" \
     -var mass "$1" -var dt "$2" -var integrator "$3" -var time "$time_units" \
     -var vacf_time "$4" -var origins "$5" -log log.lammps -screen none)
   grep RESULT "$dir/log.lammps" | tail -1

@@ -28,8 +28,8 @@ fi
 scale=${FPM_STEPS_SCALE:-1}
 out="$here/out/fpm"; mkdir -p "$out"; cd "$out"
 # a private copy: rebuilding the plugin while these runs go on does not touch them
-cp "$here/build/etddpd.so" "$out/etddpd.so"
-common=(-var plugin "$out/etddpd.so" -var potentials "$here/potentials" -screen none)
+cp "$here/build/etddpdplugin.so" "$out/etddpdplugin.so"
+common=(-var plugin "$out/etddpdplugin.so" -var potentials "$here/potentials" -screen none)
 run() {    # name steps
   local name=$1 steps=$(( $2 * scale ))
   echo "running $name ($steps steps)"

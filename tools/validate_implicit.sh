@@ -14,7 +14,7 @@ echo "| m | integrator | dt | kBT | eta (reverse Poiseuille, g = 0.3) | D (MSD i
 echo "|---|---|---|---|---|---|" >>"$table"
 run() {    # mass integrator dt time
   local name="p_${1}_${2// /_}_${3}.txt"
-  if "$prefix/bin/lmp" -in "$here/validation/in.reverse_poiseuille" -var plugin "$here/build/etddpd.so" \
+  if "$prefix/bin/lmp" -in "$here/validation/in.reverse_poiseuille" -var plugin "$here/build/etddpdplugin.so" \
       -var mass "$1" -var integrator "$2" -var dt "$3" -var time "$4" -var out "$name" \
       -log none -screen screen.txt >/dev/null 2>&1; then
     local kT eta diffusivity

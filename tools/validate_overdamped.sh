@@ -18,7 +18,7 @@ echo "|---|---|---|---|---|---|---|---|---|" >>"$table"
 run() {    # label mass integrator dt [extra lmp args]
   local label=$1 mass=$2 integrator=$3 dt=$4; shift 4
   local name="p_${mass}_${dt}_${label// /_}"
-  if "$prefix/bin/lmp" -in "$here/validation/in.reverse_poiseuille" -var plugin "$here/build/etddpd.so" \
+  if "$prefix/bin/lmp" -in "$here/validation/in.reverse_poiseuille" -var plugin "$here/build/etddpdplugin.so" \
       -var mass "$mass" -var integrator "$integrator" -var dt "$dt" -var time "$time_units" \
       -var out "$name.txt" -var iterations yes "$@" -log "$name.log" -screen none >/dev/null 2>&1; then
     local kT D eta iters kept seconds steps

@@ -10,7 +10,7 @@
 #   CASES   integrator:dt pairs, integrator as in in.shear (default "stock:0.0005 nve:0.0005
 #           diag:0.0005 implicit:0.003 implicit:0.001")
 #   LMP     LAMMPS binary (default: from tools/bootstrap.sh, which also builds the plugin)
-#   PLUGIN  the plugin (default build/etddpd.so)
+#   PLUGIN  the plugin (default build/etddpdplugin.so)
 #   RESULTS results file (default examples/shear/results.dat)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -19,7 +19,7 @@ if [ -z "${LMP:-}" ]; then
   prefix=$(bash "$top/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')
   LMP=$prefix/bin/lmp
 fi
-plugin=${PLUGIN:-$top/build/etddpd.so}
+plugin=${PLUGIN:-$top/build/etddpdplugin.so}
 rates=${RATES:-0.5 1 2}
 seeds=${SEEDS:-1001 1002 1003 1004}
 cases=${CASES:-stock:0.0005 nve:0.0005 diag:0.0005 implicit:0.003 implicit:0.001}

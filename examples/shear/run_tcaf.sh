@@ -11,7 +11,7 @@ if [ -z "${LMP:-}" ]; then
   prefix=$(bash "$top/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')
   LMP=$prefix/bin/lmp
 fi
-plugin=${PLUGIN:-$top/build/etddpd.so}
+plugin=${PLUGIN:-$top/build/etddpdplugin.so}
 time=${1:-30} integ=${2:-nve} dt=${3:-0.0005}
 cd "$here"
 mkdir -p tcaf logs

@@ -13,7 +13,7 @@ ranks=${ETD_DPD_RANKS:-1}
 mpi=(mpirun -np "$ranks"); [ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root --oversubscribe)
 cd "$here"
 for ((c = first; c <= last; c++)); do
-  "${mpi[@]}" "$prefix/bin/lmp" -in in.tcaf -var plugin "$top/build/etddpd.so" -var chunk "$c" \
+  "${mpi[@]}" "$prefix/bin/lmp" -in in.tcaf -var plugin "$top/build/etddpdplugin.so" -var chunk "$c" \
     -log "log.chunk.$c" -screen none
   echo "chunk $c done: tcaf.$c.dat"
 done
