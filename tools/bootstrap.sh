@@ -6,10 +6,17 @@
 #      keyed by version and configuration (reused on the next call)
 #   3. the ETD-DPD plugin and its tests, built incrementally in ./build
 # Environment:
-#   ETD_DPD_CACHE   where LAMMPS is cached (default ~/.cache/etd-dpd)
+#   ETD_DPD_LAMMPS  which Debian suite's LAMMPS source: bookworm (default; LAMMPS 29Sep2021
+#                   update 2, by apt-get source) or a newer suite such as sid or forky
+#                   (4Jul2026 as of 2026-11) or trixie (4Feb2025), fetched and verified by
+#                   tools/debian_lammps_source.sh; delete $ETD_DPD_CACHE/src-SUITE to refresh it
 #   LAMMPS_SOURCE   use this LAMMPS source tree instead of Debian's (a newer one, say)
+#   ETD_DPD_BUILD   the plugin's build folder (default ./build; ./build-SUITE for other suites)
+#   ETD_DPD_CACHE   where LAMMPS is cached (default ~/.cache/etd-dpd)
 #   ETD_DPD_JOBS    parallel build jobs (default: number of cores)
-# Prints the LAMMPS prefix as the last line "LAMMPS_PREFIX=..." (also written to build/lammps-prefix).
+# Each LAMMPS build is cached under a prefix keyed by version and configuration.
+# Prints "ETD_DPD_BUILD=..." and, as the last line, "LAMMPS_PREFIX=..." (also written to
+# BUILD/lammps-prefix).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cache=${ETD_DPD_CACHE:-$HOME/.cache/etd-dpd}
@@ -18,7 +25,8 @@ log() { printf '[etd-dpd] %s\n' "$*" >&2; }
 
 # ---- 1. Debian packages ------------------------------------------------------------------
 packages=(build-essential cmake libopenmpi-dev openmpi-bin libgtest-dev librandom123-dev libboost-dev
-          python3 python3-numpy python3-scipy python3-matplotlib dpkg-dev xz-utils)
+          python3 python3-numpy python3-scipy python3-matplotlib python3-sphinx
+          python3-sphinx-rtd-theme dpkg-dev xz-utils curl gpgv debian-archive-keyring)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -36,9 +44,17 @@ lammps_cmake_options=(
   -D LAMMPS_EXCEPTIONS=on -D PKG_PLUGIN=on -D PKG_DPD-BASIC=on -D PKG_MOLECULE=on
   -D PKG_EXTRA-FIX=on -D PKG_RIGID=on -D PKG_EXTRA-PAIR=off
 )
+suite=${ETD_DPD_LAMMPS:-bookworm}
 if [ -n "${LAMMPS_SOURCE:-}" ]; then
   src=$(cd "$LAMMPS_SOURCE" && pwd)
   tag="custom-$(printf '%s' "$src" | sha1sum | cut -c1-8)"
+elif [ "$suite" != bookworm ]; then
+  src="$cache/src-$suite/lammps"
+  if [ ! -f "$src/src/version.h" ]; then
+    log "fetching Debian's $suite LAMMPS source"
+    bash "$here/tools/debian_lammps_source.sh" "$suite" "$cache/src-$suite" >/dev/null
+  fi
+  tag="debian-$suite"
 else
   srcdir="$cache/src"
   src="$srcdir/lammps"
@@ -86,7 +102,9 @@ else
 fi
 
 # ---- 3. the plugin -----------------------------------------------------------------------
-build="$here/build"
+default_build="$here/build"
+[ -n "${LAMMPS_SOURCE:-}" ] || [ "$suite" = bookworm ] || default_build="$here/build-$suite"
+build=${ETD_DPD_BUILD:-$default_build}
 if [ ! -f "$build/CMakeCache.txt" ] || ! grep -q "LAMMPS_SOURCE_DIR:PATH=$src\$" "$build/CMakeCache.txt" \
    || ! grep -q "LAMMPS_PREFIX:PATH=$prefix\$" "$build/CMakeCache.txt"; then
   rm -rf "$build"
@@ -96,4 +114,5 @@ fi
 log "building the ETD-DPD plugin in $build"
 cmake --build "$build" -j "$jobs" >&2
 printf '%s\n' "$prefix" >"$build/lammps-prefix"
+echo "ETD_DPD_BUILD=$build"
 echo "LAMMPS_PREFIX=$prefix"
