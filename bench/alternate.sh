@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Loop time of one implicit-scheme configuration (validation/in.temperature_scan, m = 0.001,
+# Loop time of one implicit-scheme configuration (validation/temperature/in.temperature_scan, m = 0.001,
 # dt = 0.001, 400 timed steps after 100 of equilibration) for several builds of the plugin or
 # newton settings, run alternately in rounds so that slow spells of a shared machine fall on
 # all of them alike. Prints every round and each variant's minimum and median.
@@ -27,7 +27,7 @@ for round in $(seq "$rounds"); do
     plugin=${variant%%:*} newton=on
     [[ $variant == *:* ]] && newton=${variant##*:}
     plugin=$(cd "$(dirname "$plugin")" && pwd)/$(basename "$plugin")
-    (cd "$work" && "${mpi[@]}" "$lmp" -in "$here/validation/in.temperature_scan" -var plugin "$plugin" \
+    (cd "$work" && "${mpi[@]}" "$lmp" -in "$here/validation/temperature/in.temperature_scan" -var plugin "$plugin" \
       -var mass "$mass" -var dt "$dt" -var integrator "$integrator" -var newton "$newton" \
       -var time "$(awk -v d="$dt" 'BEGIN{print 400*d}')" -var equil "$(awk -v d="$dt" 'BEGIN{print 100*d}')" \
       -log log.alternate -screen none >/dev/null)

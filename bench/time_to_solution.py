@@ -6,7 +6,7 @@ that step, all in one go on the same machine.
 
 Usage: bench/time_to_solution.py LMP PLUGIN [--time T] [--out FILE] [--ranks N] [--masses M ...]
                                   [--implicit-newton on|off]
-The system is validation/in.temperature_scan (4,000 atoms, n = 4, a = 18.75, gamma = 4.5,
+The system is validation/temperature/in.temperature_scan (4,000 atoms, n = 4, a = 18.75, gamma = 4.5,
 s = 1/2, kBT = 1). Stock = pair dpd/ext (ws = s/2) + fix nve.
 """
 import argparse
@@ -17,7 +17,7 @@ import subprocess
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-SCAN = os.path.join(HERE, "..", "validation", "in.temperature_scan")
+SCAN = os.path.join(HERE, "..", "validation", "temperature", "in.temperature_scan")
 
 # (label, pair, integrator, mass, candidate steps from small to large); at m = 0.0001 velocities
 # relax within a few steps, so a shorter run (MASS_TIME) resolves kBT to well below 1 %
@@ -41,7 +41,7 @@ CASES = [
     ("dpd/gen + etd scheme implicit", "gen", "etd scheme implicit", 0.0001, [0.0001, 0.0002, 0.0003, 0.0005]),
     # the zero-mass limit has no temperature to judge (its velocities are mobilities' output):
     # its step is the one whose viscosity and diffusion match the inertial scheme's small-mass
-    # limit (doc/validation_overdamped.md), timed here against stock at m = 0.0001
+    # limit (validation/overdamped/README.md), timed here against stock at m = 0.0001
     ("dpd/gen + etd scheme implicit overdamped yes", "gen", "etd scheme implicit overdamped yes", 0.0001,
      [0.003]),
 ]
@@ -49,14 +49,14 @@ CASES = [
 
 # The viscosity bounds the step where kBT does not: at m = 0.001 the implicit scheme's
 # reverse-Poiseuille viscosity is within 2 % at dt = 0.001 but +5.5 % at 0.0012
-# (doc/validation_implicit.md), so no step above 0.001 is chosen there, whatever its kBT (the
+# (validation/implicit/README.md), so no step above 0.001 is chosen there, whatever its kBT (the
 # scan still runs and reports them)
 VISCOSITY_MAX_DT = {0.001: 0.001}
 
 
 # On several ranks the implicit scheme runs with newton off: its solver needs a newton-off
 # neighbor list there, which it then shares with the pair style instead of building a second
-# one (13 % shorter steps on 2 ranks, doc/benchmarks.md). Stock dpd/ext and the diagonal scheme keep LAMMPS's
+# one (13 % shorter steps on 2 ranks, bench/README.md). Stock dpd/ext and the diagonal scheme keep LAMMPS's
 # default newton on: stock dpd/ext + nve is about 15 % slower with newton off.
 def newton_setting(integrator, ranks, implicit_newton):
     return implicit_newton if "implicit" in integrator and ranks > 1 else "on"

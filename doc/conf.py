@@ -14,7 +14,7 @@ project = 'ETD-DPD'
 author = 'ETD-DPD developers'
 root_doc = 'index'
 source_suffix = {'.rst': 'restructuredtext'}
-exclude_patterns = ['_build', '_ext', 'figures']
+exclude_patterns = ['_build', '_ext']
 highlight_language = 'none'
 extensions = ['sphinx.ext.mathjax']
 
