@@ -603,96 +603,32 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
                            const std::vector<double> *start,
                            const std::vector<double> *start_friction)
 {
-  const int nlocal = atom->nlocal;
-  const int n = dofs * nlocal;
   const int *mask = atom->mask;
+  dof_inertia(work.masses);
+  accumulate_blocks(2 * dofs);    // G's diagonal 3x3 blocks, the preconditioner's
 
-  std::vector<double> &masses = work.masses, &rhs = work.rhs;
-  rhs.assign(rhs_in.begin(), rhs_in.begin() + n);
-  dof_inertia(masses);
-
-  // block-Jacobi preconditioner: each atom's 3x3 block of mass_weight M + friction_weight G
-  // (per atom one 3x3 block, 6 values, or with rotation two: v-v and Omega-Omega)
-  const int nblocks = n / 3;
-  accumulate_blocks(2 * dofs);
-  std::vector<double> &inv_diag = work.inv_diag, &block_inverse = work.block_inverse;
-  inv_diag.assign(n, 0.0);
-  block_inverse.assign(9 * nblocks, 0.0);
-  for (int b = 0; b < nblocks; b++) {
-    if (!(mask[b * 3 / dofs] & groupbit)) continue;
-    // an atom without friction (and, overdamped, without mass) is held at 0
-    if (!etd::invert_block(&diagonal[6 * b], mass_weight * masses[3 * b], friction_weight, &block_inverse[9 * b]))
-      continue;
-    for (int k = 0; k < 3; k++) inv_diag[3 * b + k] = block_inverse[9 * b + 4 * k];
-  }
-
+  etd::FrictionSystem system;
+  system.n = dofs * atom->nlocal;
+  system.inertia = work.masses.data();
+  system.blocks = diagonal.data();
+  system.mass_weight = mass_weight;
+  system.friction_weight = friction_weight;
+  system.deflate = deflate;
+  // atoms outside the group are held at rest (their velocities are already in rhs)
+  auto mobile = [&](int block) { return (mask[block * 3 / dofs] & groupbit) != 0; };
+  auto apply_friction = [this](const double *u, double *out, double weight) {
+    gather_operand(u, true);
+    accumulate_friction(operand.data(), out, weight);
+  };
   auto global_sum = [this](double *values, int count) {
-    double sums[16];    // conjugate_gradient sums at most 9 values at once
+    double sums[16];    // the solver sums at most 9 values at once
     MPI_Allreduce(values, sums, count, MPI_DOUBLE, MPI_SUM, world);
     for (int k = 0; k < count; k++) values[k] = sums[k];
   };
-  // per-component mean over the solved unknowns (not those held at zero), removed where the
-  // translation is singular; held unknowns must stay untouched for CG to stay consistent
-  double active_count[3] = {0.0, 0.0, 0.0};
-  if (deflate) {    // (a reduction only where it is needed)
-    double active_local[3] = {0.0, 0.0, 0.0};
-    for (int k = 0; k < n; k++)
-      if (inv_diag[k] != 0.0) active_local[k % 3] += 1.0;
-    MPI_Allreduce(active_local, active_count, 3, MPI_DOUBLE, MPI_SUM, world);
-  }
-  const double group_count = active_count[0] + active_count[1] + active_count[2];
-  auto remove_mean = [&](double *vec) {
-    double local[3] = {0.0, 0.0, 0.0}, sum[3];
-    for (int k = 0; k < n; k++)
-      if (inv_diag[k] != 0.0) local[k % 3] += vec[k];
-    MPI_Allreduce(local, sum, 3, MPI_DOUBLE, MPI_SUM, world);
-    for (int k = 0; k < n; k++)
-      if (inv_diag[k] != 0.0 && active_count[k % 3] > 0.0) vec[k] -= sum[k % 3] / active_count[k % 3];
-  };
-  if (deflate && group_count > 0.0) remove_mean(rhs.data());
-
-  // au = mass_weight M u + friction_weight G u, atoms outside the group at rest (the solver
-  // zeroes their rows, which it holds)
-  auto apply = [&](const double *u, double *au) {
-    gather_operand(u, true);
-    for (int k = 0; k < n; k++) au[k] = mass_weight * masses[k] * u[k];
-    accumulate_friction(operand.data(), au, friction_weight);
-    if (deflate) remove_mean(au);
-  };
-
-  solution.assign(n, 0.0);
-  std::vector<double> &start_product = work.start_product;
-  bool have_start_product = false;
-  if (start && start_friction) {
-    // A x0 from G x0, which the caller already has: one application of G saved
-    start_product.resize(n);
-    for (int i = 0; i < nlocal; i++) {
-      const bool mobile = mask[i] & groupbit;
-      for (int k = dofs * i; k < dofs * (i + 1); k++)
-        start_product[k] = mobile ? mass_weight * masses[k] * (*start)[k] + friction_weight * (*start_friction)[k] : 0.0;
-    }
-    have_start_product = true;
-  }
-  if (start) {
-    // from the given start (the old velocities): the collective motion that the block-Jacobi
-    // start damps is kept, and the error left is in local relative motion, which the
-    // preconditioner removes fastest (doc/fix_etd.rst: accurate at loose tolerances)
-    for (int k = 0; k < n; k++)
-      if (inv_diag[k] != 0.0) solution[k] = (*start)[k];
-  } else {
-    // from the block-Jacobi solution
-    for (int b = 0; b < nblocks; b++)
-      for (int k = 0; k < 3; k++) {
-        const double *m = &block_inverse[9 * b + 3 * k];
-        solution[3 * b + k] = m[0] * rhs[3 * b] + m[1] * rhs[3 * b + 1] + m[2] * rhs[3 * b + 2];
-      }
-  }
-  const etd::SolverResult result = etd::conjugate_gradient(
-      n, apply, global_sum, inv_diag.data(), rhs.data(), solution.data(), tolerance, max_iterations,
-      block_inverse.data(), [&](double *vec) {
-        if (deflate) remove_mean(vec);
-      }, &work.cg, have_start_product ? start_product.data() : nullptr);
-  if (deflate) remove_mean(solution.data());
+  const etd::SolverResult result = etd::solve_friction_system(
+      system, mobile, apply_friction, global_sum, rhs_in.data(), solution, tolerance, max_iterations,
+      work.solve, start ? start->data() : nullptr,
+      (start && start_friction) ? start_friction->data() : nullptr);
 
   last_iterations = result.iterations;
   last_residual = result.relative_residual;

@@ -7,6 +7,7 @@
 
 #include "dpd_random.h"
 #include "friction_operator.h"
+#include "friction_solve.h"
 #include "neighbor_safety.h"
 #include "partner_exchange.h"
 
@@ -120,13 +121,13 @@ class FixETDImplicit : public Fix {
 
   // work vectors reused from step to step (per-step allocation costs page faults at scale)
   struct Work {
-    std::vector<double> masses, rhs, inv_diag, block_inverse, start_product;    // solve()
+    std::vector<double> masses;    // solve(): per unknown, mass or moment of inertia
     std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia, predicted;    // the steps
     std::vector<double> ghost_u, ghost_owner;    // per ghost: velocities, owner (rank, index)
     std::vector<double> ghost_image;    // per ghost: its count of box vectors (pbc) from its owner
     std::vector<double> mean, gmean;    // record_split()
     std::vector<double> lead;    // post_integrate(): how far the next friction step moves each atom
-    etd::CgWorkspace cg;
+    etd::FrictionSolveWorkspace solve;
   } work;
 
   bool split_requested;

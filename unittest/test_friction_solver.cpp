@@ -3,7 +3,9 @@
 #include "dpd_kernel.h"
 #include "dpd_random.h"
 #include "fpm_kernel.h"
+#include "conjugate_gradient.h"
 #include "friction_operator.h"
+#include "friction_solve.h"
 
 #include <gtest/gtest.h>
 
@@ -421,4 +423,118 @@ TEST(FrictionOperator, FpmPairOperatorIsTheKernelsFriction)
       etd::accumulate_fpm_friction(pairs, unit.data(), column.data(), all);
       EXPECT_NEAR(blocks[6 * part + b], column[3 * part + order[b][0]], 1e-6) << part << " " << b;
     }
+}
+
+// The solve the implicit fix performs, as one function: the inertial system to tolerance from
+// either start, a start with its G product given agreeing with one without, held blocks kept at
+// zero, and in the zero-mass limit the translation projected out of the solution.
+namespace {
+struct SolveSetup {
+  Cluster c;
+  int n = 3 * c.natoms;
+  std::vector<double> inertia = std::vector<double>(n, 0.01), blocks, rhs;
+  SolveSetup()
+  {
+    blocks.assign(2 * n, 0.0);
+    etd::accumulate_blocks(c.pairs, blocks.data(), all_local, 6);
+    std::mt19937_64 gen(11);
+    std::normal_distribution<double> normal;
+    for (int k = 0; k < n; k++) rhs.push_back(normal(gen));
+  }
+  // out += weight G u
+  void apply_friction(const double *u, double *out, double weight) const
+  {
+    std::vector<double> gu(n, 0.0);
+    etd::accumulate_friction(c.pairs, u, gu.data(), all_local);
+    for (int k = 0; k < n; k++) out[k] += weight * gu[k];
+  }
+  double relative_residual(const etd::FrictionSystem &sys, const std::vector<double> &x,
+                           const std::vector<double> &b) const
+  {
+    std::vector<double> ax(n);
+    for (int k = 0; k < n; k++) ax[k] = sys.mass_weight * inertia[k] * x[k];
+    apply_friction(x.data(), ax.data(), sys.friction_weight);
+    double rr = 0.0, bb = 0.0;
+    for (int k = 0; k < n; k++) {
+      rr += (ax[k] - b[k]) * (ax[k] - b[k]);
+      bb += b[k] * b[k];
+    }
+    return std::sqrt(rr / bb);
+  }
+};
+}    // namespace
+
+TEST(FrictionSolve, InertialSystemToToleranceFromEitherStart)
+{
+  SolveSetup s;
+  etd::FrictionSystem sys;
+  sys.n = s.n;
+  sys.inertia = s.inertia.data();
+  sys.blocks = s.blocks.data();
+  sys.mass_weight = 1.0;
+  sys.friction_weight = 0.5 * 0.003;
+  auto apply = [&](const double *u, double *out, double w) { s.apply_friction(u, out, w); };
+  const auto mobile = [](int) { return true; };
+  etd::FrictionSolveWorkspace work;
+  std::vector<double> cold, warm, warm_product;
+  const etd::SolverResult a = etd::solve_friction_system(sys, mobile, apply, serial_sum, s.rhs.data(), cold,
+                                                         1e-10, 500, work);
+  ASSERT_TRUE(a.converged);
+  EXPECT_LT(s.relative_residual(sys, cold, s.rhs), 1e-9);
+  // a start near the answer, with and without its G product supplied
+  std::vector<double> start = cold, start_friction(s.n, 0.0);
+  for (int k = 0; k < s.n; k++) start[k] *= 1.0 + 0.01 * std::sin(k);
+  s.apply_friction(start.data(), start_friction.data(), 1.0);
+  const etd::SolverResult b = etd::solve_friction_system(sys, mobile, apply, serial_sum, s.rhs.data(), warm,
+                                                         1e-10, 500, work, start.data());
+  const etd::SolverResult c = etd::solve_friction_system(sys, mobile, apply, serial_sum, s.rhs.data(),
+                                                         warm_product, 1e-10, 500, work, start.data(),
+                                                         start_friction.data());
+  ASSERT_TRUE(b.converged && c.converged);
+  EXPECT_LT(b.iterations, a.iterations) << "a start 1 % from the answer should save iterations";
+  EXPECT_EQ(b.iterations, c.iterations);
+  for (int k = 0; k < s.n; k++) {
+    EXPECT_NEAR(warm[k], cold[k], 1e-8 * (1.0 + std::fabs(cold[k])));
+    EXPECT_NEAR(warm_product[k], warm[k], 1e-10 * (1.0 + std::fabs(warm[k])));
+  }
+}
+
+TEST(FrictionSolve, HeldBlocksStayZeroAndZeroMassLimitIsDeflated)
+{
+  SolveSetup s;
+  auto apply = [&](const double *u, double *out, double w) { s.apply_friction(u, out, w); };
+  etd::FrictionSolveWorkspace work;
+  etd::FrictionSystem sys;
+  sys.n = s.n;
+  sys.inertia = s.inertia.data();
+  sys.blocks = s.blocks.data();
+  sys.mass_weight = 1.0;
+  sys.friction_weight = 0.01;
+  // every seventh atom outside the group: its velocity stays exactly zero
+  const auto some_held = [](int block) { return block % 7 != 0; };
+  std::vector<double> x;
+  ASSERT_TRUE(etd::solve_friction_system(sys, some_held, apply, serial_sum, s.rhs.data(), x, 1e-10, 500, work)
+                  .converged);
+  for (int b = 0; b < s.n / 3; b += 7)
+    for (int k = 0; k < 3; k++) EXPECT_EQ(x[3 * b + k], 0.0) << "held atom " << b;
+
+  // zero mass, all mobile: G is singular along the translation, which the solve removes from
+  // the right-hand side and the solution; what is left solves G x = b - mean(b)
+  sys.mass_weight = 0.0;
+  sys.friction_weight = 1.0;
+  sys.deflate = true;
+  const auto mobile = [](int) { return true; };
+  ASSERT_TRUE(etd::solve_friction_system(sys, mobile, apply, serial_sum, s.rhs.data(), x, 1e-10, 2000, work)
+                  .converged);
+  std::vector<double> centred = s.rhs;
+  for (int k = 0; k < 3; k++) {
+    double mean_b = 0.0, mean_x = 0.0;
+    for (int a = 0; a < s.n / 3; a++) {
+      mean_b += s.rhs[3 * a + k] / (s.n / 3);
+      mean_x += x[3 * a + k] / (s.n / 3);
+    }
+    EXPECT_NEAR(mean_x, 0.0, 1e-12);
+    for (int a = 0; a < s.n / 3; a++) centred[3 * a + k] -= mean_b;
+  }
+  EXPECT_LT(s.relative_residual(sys, x, centred), 1e-8);
 }
