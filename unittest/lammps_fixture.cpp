@@ -1,5 +1,7 @@
 #include "lammps_fixture.h"
 
+#include <gtest/gtest.h>
+
 #include "atom.h"
 #include "exceptions.h"
 #include "input.h"
@@ -193,6 +195,18 @@ std::vector<double> on_ranks(int ranks, const std::function<std::vector<double>(
   }
   MPI_Barrier(MPI_COMM_WORLD);
   return result;
+}
+
+void expect_errors(const std::vector<BadInput> &cases, const std::function<void(Lammps &)> &setup)
+{
+  for (const BadInput &c : cases) {
+    Lammps l;
+    setup(l);
+    const std::string message = l.error_of(c.commands);
+    EXPECT_FALSE(message.empty()) << "commands ending '" << c.commands.back() << "' gave no ERROR";
+    EXPECT_NE(message.find(c.expected), std::string::npos)
+        << "commands ending '" << c.commands.back() << "' gave: '" << message << "'";
+  }
 }
 
 }    // namespace etdtest

@@ -40,6 +40,16 @@ class Lammps {
   MPI_Comm comm;
 };
 
+// A bad-input case: commands run after the test's set-up, and a piece of the ERROR message they
+// must stop with ("" where LAMMPS's own check stops them: only that it stops is ours to test).
+struct BadInput {
+  std::vector<std::string> commands;
+  std::string expected;
+};
+// Runs every case in a fresh instance prepared by setup and checks that it stops with an ERROR
+// that contains the expected text.
+void expect_errors(const std::vector<BadInput> &cases, const std::function<void(Lammps &)> &setup);
+
 // A data file with n atoms at random positions in a cube of side L (deterministic).
 void write_random_data(const std::string &path, int natoms, double L, unsigned seed,
                        int ntypes = 1, double vmax = 0.0);

@@ -179,32 +179,28 @@ TEST(TCurrent, FeedsFixAveCorrelate)
 
 TEST(TCurrent, BadInputErrors)
 {
-  Lammps l;
-  l.cmds({"units lj", "region box block 0 5 0 5 0 5", "create_box 1 box",
-          "create_atoms 1 random 50 3 NULL", "mass 1 1.0"});
-  EXPECT_TRUE(contains(l.error_of("compute J all dpd/tcurrent"),
-                       "Illegal compute dpd/tcurrent command: expected 'compute ID group dpd/tcurrent K'"));
-  EXPECT_TRUE(contains(l.error_of("compute J all dpd/tcurrent 4 5"), "Illegal compute dpd/tcurrent"));
-  EXPECT_TRUE(contains(l.error_of("compute J all dpd/tcurrent four"), "must be a positive integer, got 'four'"));
-  EXPECT_TRUE(contains(l.error_of("compute J all dpd/tcurrent 2.5"), "must be a positive integer"));
-  EXPECT_TRUE(contains(l.error_of("compute J all dpd/tcurrent 0"), "must be between 1 and 100000, got 0"));
-  EXPECT_TRUE(contains(l.error_of("compute J all dpd/tcurrent -3"), "must be between 1 and 100000"));
-
-  l.cmds({"clear", std::string("plugin load ") + ETD_PLUGIN_PATH, "units lj",
-          "boundary p p f", "region box block 0 5 0 5 0 5", "create_box 1 box",
-          "create_atoms 1 random 50 3 NULL", "mass 1 1.0", "compute J all dpd/tcurrent 2",
-          "thermo_style custom step c_J[1]"});
-  EXPECT_TRUE(contains(l.error_of("run 0"), "requires a box periodic in x, y and z"));
-
-  l.cmds({"clear", std::string("plugin load ") + ETD_PLUGIN_PATH, "units lj",
-          "region box prism 0 5 0 5 0 5 1 0 0", "create_box 1 box",
-          "create_atoms 1 random 50 3 NULL", "mass 1 1.0", "compute J all dpd/tcurrent 2",
-          "thermo_style custom step c_J[1]"});
-  EXPECT_TRUE(contains(l.error_of("run 0"), "requires an orthogonal box"));
-
-  l.cmds({"clear", std::string("plugin load ") + ETD_PLUGIN_PATH, "units lj", "dimension 2",
-          "region box block 0 5 0 5 -0.5 0.5", "create_box 1 box",
-          "create_atoms 1 random 50 3 NULL", "mass 1 1.0", "compute J all dpd/tcurrent 2",
-          "thermo_style custom step c_J[1]"});
-  EXPECT_TRUE(contains(l.error_of("run 0"), "requires a 3d system"));
+  const std::vector<std::string> periodic = {"units lj", "region box block 0 5 0 5 0 5", "create_box 1 box",
+                                             "create_atoms 1 random 50 3 NULL", "mass 1 1.0"};
+  etdtest::expect_errors({
+      {{"compute J all dpd/tcurrent"}, "Illegal compute dpd/tcurrent command: expected 'compute ID group dpd/tcurrent K'"},
+      {{"compute J all dpd/tcurrent 4 5"}, "Illegal compute dpd/tcurrent"},
+      {{"compute J all dpd/tcurrent four"}, "must be a positive integer, got 'four'"},
+      {{"compute J all dpd/tcurrent 2.5"}, "must be a positive integer"},
+      {{"compute J all dpd/tcurrent 0"}, "must be between 1 and 100000, got 0"},
+      {{"compute J all dpd/tcurrent -3"}, "must be between 1 and 100000"},
+  }, [&](Lammps &l) { l.cmds(periodic); });
+  // boxes the transverse current is not defined for: a wall, a tilted box, two dimensions
+  const std::vector<std::string> run = {"create_atoms 1 random 50 3 NULL", "mass 1 1.0",
+                                        "compute J all dpd/tcurrent 2", "thermo_style custom step c_J[1]", "run 0"};
+  auto box = [&](std::vector<std::string> head) {
+    head.insert(head.end(), run.begin(), run.end());
+    return head;
+  };
+  etdtest::expect_errors({
+      {box({"units lj", "boundary p p f", "region box block 0 5 0 5 0 5", "create_box 1 box"}),
+       "requires a box periodic in x, y and z"},
+      {box({"units lj", "region box prism 0 5 0 5 0 5 1 0 0", "create_box 1 box"}), "requires an orthogonal box"},
+      {box({"units lj", "dimension 2", "region box block 0 5 0 5 -0.5 0.5", "create_box 1 box"}),
+       "requires a 3d system"},
+  }, [](Lammps &) {});
 }

@@ -167,11 +167,7 @@ TEST(FixEtd, MomentumConserveOptionRemovesTheDrift)
 
 TEST(FixEtd, BadInputGivesClearErrors)
 {
-  struct Case {
-    std::vector<std::string> commands;
-    std::string expected;
-  };
-  const std::vector<Case> cases = {
+  etdtest::expect_errors({
       {{"fix 1 all etd order 3"}, "order must be 1 or 2"},
       {{"fix 1 all etd noise gaussian"}, "noise must be piecewise or exact"},
       {{"fix 1 all etd momentum maybe"}, "momentum must be none or conserve"},
@@ -179,14 +175,7 @@ TEST(FixEtd, BadInputGivesClearErrors)
       {{"fix 1 all etd colour red"}, "unknown keyword colour"},
       {{"pair_style zero 1.0", "pair_coeff * *", "fix 1 all etd", "run 0"}, "requires pair style dpd/gen"},
       {{"fix 1 all etd", "run_style respa 2 2", "run 0"}, "respa"},
-  };
-  for (const auto &c : cases) {
-    Lammps l;
-    fluid(l, "pair_coeff 1 1 18.75 4.5 0.5");
-    const std::string message = l.error_of(c.commands);
-    EXPECT_NE(message.find(c.expected), std::string::npos)
-        << "commands ending '" << c.commands.back() << "' gave: '" << message << "'";
-  }
+  }, [](Lammps &l) { fluid(l, "pair_coeff 1 1 18.75 4.5 0.5"); });
 }
 
 TEST(FixEtd, HybridOverlayWithAnotherStyleMatchesThePlainStyle)

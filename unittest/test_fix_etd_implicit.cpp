@@ -287,11 +287,7 @@ TEST(FixEtdImplicit, StartFromOldVelocitiesSolvesTheSameSystem)
 
 TEST(FixEtdImplicit, BadInputGivesClearErrors)
 {
-  struct Case {
-    std::vector<std::string> commands;
-    std::string expected;
-  };
-  const std::vector<Case> cases = {
+  etdtest::expect_errors({
       {{"fix 1 all etd scheme explicit"}, "scheme must be diagonal or implicit"},
       {{"fix 1 all etd scheme implicit tol 0"}, "tol must be between 0 and 1"},
       {{"fix 1 all etd scheme implicit tol 2"}, "tol must be between 0 and 1"},
@@ -307,14 +303,7 @@ TEST(FixEtdImplicit, BadInputGivesClearErrors)
       {{"pair_style zero 1.0", "pair_coeff * *", "fix 1 all etd scheme implicit", "run 0"},
        "requires pair style dpd/gen"},
       {{"fix 1 all etd scheme implicit", "run_style respa 2 2", "run 0"}, "respa"},
-  };
-  for (const auto &c : cases) {
-    Lammps l;
-    fluid(l);
-    const std::string message = l.error_of(c.commands);
-    EXPECT_NE(message.find(c.expected), std::string::npos)
-        << "commands ending '" << c.commands.back() << "' gave: '" << message << "'";
-  }
+  }, [](Lammps &l) { fluid(l); });
 }
 
 // Overdamped Couette flow: frozen walls (z < 1 moving at -U, z > 9 at +U; periodic, so the

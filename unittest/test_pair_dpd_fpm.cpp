@@ -336,11 +336,7 @@ TEST(PairDpdFpm, ForcesAndTorquesAgreeAcrossRankCountsAndNewton)
 
 TEST(PairDpdFpm, BadInputGivesClearErrors)
 {
-  struct Case {
-    std::vector<std::string> commands;
-    std::string expected;
-  };
-  const std::vector<Case> cases = {
+  etdtest::expect_errors({
       {{"pair_style dpd/fpm 1.0 1.0"}, "expected 3 arguments"},
       {{"pair_style dpd/fpm -1.0 1.0 5"}, "temperature must be >= 0"},
       {{"pair_style dpd/fpm 1.0 0.0 5"}, "cutoff must be > 0"},
@@ -359,15 +355,7 @@ TEST(PairDpdFpm, BadInputGivesClearErrors)
       {{"pair_style hybrid dpd/fpm 1.0 1.0 5 zero 1.0", "pair_coeff * * dpd/fpm 25 4.5 4.5"}, "expected I J a gamma_C gamma_S s"},
       {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5", "set atom 3 diameter 0.0", "fix 1 all etd", "run 1"},
        "atom 3 has zero moment of inertia"},
-  };
-  for (const auto &c : cases) {
-    Lammps l;
-    setup_box(l);
-    const std::string message = l.error_of(c.commands);
-    EXPECT_FALSE(message.empty()) << "commands ending '" << c.commands.back() << "' gave no ERROR";
-    EXPECT_NE(message.find(c.expected), std::string::npos)
-        << "commands ending '" << c.commands.back() << "' gave: '" << message << "'";
-  }
+  }, [](Lammps &l) { setup_box(l); });
   // atom styles without angular velocity, and without atom IDs
   {
     Lammps l;

@@ -268,11 +268,7 @@ TEST(PairDpdGen, WorksInsideHybridOverlay)
 
 TEST(PairDpdGen, BadInputGivesClearErrors)
 {
-  struct Case {
-    std::vector<std::string> commands;
-    std::string expected;
-  };
-  const std::vector<Case> cases = {
+  etdtest::expect_errors({
       {{"pair_style dpd/gen 1.0 1.0"}, "expected 3 arguments"},
       {{"pair_style dpd/gen -1.0 1.0 5"}, "temperature must be >= 0"},
       {{"pair_style dpd/gen 1.0 0.0 5"}, "cutoff must be > 0"},
@@ -295,13 +291,5 @@ TEST(PairDpdGen, BadInputGivesClearErrors)
         "comm_modify vel no", "run 0"}, "comm_modify vel yes"},
       {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff * * 25 4.5 0.5", "compute s all dpd/split extra"}, "compute dpd/split"},
       {{"pair_style zero 1.0", "pair_coeff * *", "compute s all dpd/split", "run 0"}, "Compute dpd/split requires pair style dpd/gen"},
-  };
-  for (const auto &c : cases) {
-    Lammps l;
-    setup_box(l);
-    const std::string message = l.error_of(c.commands);
-    EXPECT_FALSE(message.empty()) << "commands ending '" << c.commands.back() << "' gave no ERROR";
-    EXPECT_NE(message.find(c.expected), std::string::npos)
-        << "commands ending '" << c.commands.back() << "' gave: '" << message << "'";
-  }
+  }, [](Lammps &l) { setup_box(l); });
 }

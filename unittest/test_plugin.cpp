@@ -3,17 +3,34 @@
 
 #include "lammps.h"
 #include "library.h"
+#include "plugin.h"
 
 #include <gtest/gtest.h>
 
+#include <set>
+#include <string>
+#include <utility>
+
 using etdtest::Lammps;
 
+// Every style the package documents is registered, usable by LAMMPS under its name, and
+// nothing else is: the plugin's own registration list has exactly these eight entries.
 TEST(Plugin, RegistersEveryStyle)
 {
   Lammps l;
-  EXPECT_TRUE(lammps_has_style(l.lmp, "pair", "dpd/gen"));
-  EXPECT_TRUE(lammps_has_style(l.lmp, "fix", "etd"));
-  EXPECT_TRUE(lammps_has_style(l.lmp, "compute", "dpd/split"));
+  const std::set<std::pair<std::string, std::string>> documented = {
+      {"pair", "dpd/gen"},           {"pair", "dpd/fpm"},
+      {"fix", "etd"},                {"fix", "wall/thermal/layer"},
+      {"fix", "wall/cylinder/bounce"}, {"compute", "dpd/split"},
+      {"compute", "dpd/tcurrent"},   {"command", "dpd/design"}};
+  std::set<std::pair<std::string, std::string>> registered;
+  for (int i = 0; i < LAMMPS_NS::plugin_get_num_plugins(); i++) {
+    const lammpsplugin_t *info = LAMMPS_NS::plugin_get_info(i);
+    registered.insert({info->style, info->name});
+  }
+  EXPECT_EQ(registered, documented);
+  for (const auto &[category, name] : documented)
+    EXPECT_TRUE(lammps_has_style(l.lmp, category.c_str(), name.c_str())) << category << " " << name;
   // and the stock styles we compare against are in this LAMMPS
   EXPECT_TRUE(lammps_has_style(l.lmp, "pair", "dpd"));
   EXPECT_TRUE(lammps_has_style(l.lmp, "pair", "dpd/ext"));

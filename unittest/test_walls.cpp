@@ -216,11 +216,7 @@ TEST(WallThermalLayer, DrawsDependOnSeedAndStep)
 
 TEST(Walls, BadInputIsAnError)
 {
-  struct Case {
-    std::vector<std::string> commands;
-    std::string expected;
-  };
-  const std::vector<Case> cases = {
+  etdtest::expect_errors({
       {{"fix w all wall/cylinder/bounce z 5 5"}, "expected dim c1 c2 radius"},
       {{"fix w all wall/cylinder/bounce q 5 5 1"}, "dim must be x, y or z, got q"},
       {{"fix w all wall/cylinder/bounce z 5 5 0"}, "radius must be > 0"},
@@ -238,14 +234,7 @@ TEST(Walls, BadInputIsAnError)
       {{"fix w all wall/thermal/layer 5 zlo 0 1 1 0 0 2"}, "velocity of face zlo must lie in the wall plane"},
       {{"fix w all wall/thermal/layer 5 xlo 0 1 1 0 1 0 xlo 2 1 1 0 0 0"}, "face xlo given twice"},
       {{"fix w all wall/thermal/layer 5 xlo 0 1 1 0 1 0 yhi 2 1 1"}, "face yhi needs position thickness"},
-  };
-  for (const auto &c : cases) {
-    Lammps l;
-    empty_box(l);
-    const std::string message = l.error_of(c.commands);
-    EXPECT_NE(message.find(c.expected), std::string::npos)
-        << "commands ending '" << c.commands.back() << "' gave: '" << message << "'";
-  }
+  }, [](Lammps &l) { empty_box(l); });
 }
 
 TEST(Walls, ThermalLayerNeedsAtomIds)
