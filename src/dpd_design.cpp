@@ -30,7 +30,31 @@ struct Keyword {
 
 }    // namespace
 
+// What the user asked for, checked: the target viscosity, Schmidt number or particle diffusion
+// time, and the fluid's state.
+struct DPDDesign::Request {
+  std::string name;
+  double eta = 0.0, target = 0.0;    // target: Sc or tau_P
+  bool by_schmidt = true;
+  etd::kinetic::FluidState fluid;
+  std::string state() const
+  {
+    return fmt::format("n = {}, m = {}, kBT = {}, cutoff = {}", fluid.number_density, fluid.mass,
+                       fluid.temperature, fluid.cutoff);
+  }
+};
+
 void DPDDesign::command(int narg, char **arg)
+{
+  const Request request = parse(narg, arg);
+  const kt::Design design =
+      request.by_schmidt ? kt::design_from_schmidt(request.fluid, request.eta, request.target)
+                         : kt::design_from_particle_diffusion_time(request.fluid, request.eta, request.target);
+  if (!design.feasible) refuse(request, design);
+  store_and_report(request, design);
+}
+
+DPDDesign::Request DPDDesign::parse(int narg, char **arg)
 {
   if (narg < 1) error->all(FLERR, "Illegal dpd/design command: expected '{}'", usage);
   const std::string name = arg[0];
@@ -79,34 +103,39 @@ void DPDDesign::command(int narg, char **arg)
       error->all(FLERR, "dpd/design: missing keyword {} ({}); expected '{}'", keys[k].name,
                  keys[k].meaning, usage);
 
-  const kt::FluidState fluid{keys[DENSITY].value, keys[MASS].value, keys[TEMP].value,
-                             keys[CUTOFF].value};
-  const double eta = keys[ETA].value;
-  const bool by_schmidt = keys[SC].given;
-  const kt::Design design = by_schmidt ? kt::design_from_schmidt(fluid, eta, keys[SC].value)
-                                       : kt::design_from_particle_diffusion_time(fluid, eta, keys[TAUP].value);
-  const std::string state = fmt::format("n = {}, m = {}, kBT = {}, cutoff = {}",
-                                        fluid.number_density, fluid.mass, fluid.temperature,
-                                        fluid.cutoff);
+  Request request;
+  request.name = name;
+  request.eta = keys[ETA].value;
+  request.by_schmidt = keys[SC].given;
+  request.target = request.by_schmidt ? keys[SC].value : keys[TAUP].value;
+  request.fluid = {keys[DENSITY].value, keys[MASS].value, keys[TEMP].value, keys[CUTOFF].value};
+  return request;
+}
 
-  if (!design.feasible) {
-    if (by_schmidt) {
-      const double sc = keys[SC].value;
-      error->all(FLERR, "dpd/design: no exponent s > 0 gives eta = {} with Sc = {} at {} "
-                 "(E = {:.6g}, needs E > 20): Sc must exceed {:.6g} at this eta, or eta must be "
-                 "below {:.6g} at this Sc",
-                 eta, sc, state, design.e, kt::min_schmidt_number(fluid, eta),
-                 kt::max_viscosity_for_schmidt(fluid, sc));
-    } else {
-      const double tau_p = keys[TAUP].value;
-      error->all(FLERR, "dpd/design: no exponent s > 0 gives eta = {} with tau_P = {} at {} "
-                 "(E = {:.6g}, needs E > 20): tau_P must exceed {:.6g} at this eta, or eta must "
-                 "be below {:.6g} at this tau_P",
-                 eta, tau_p, state, design.e, kt::min_particle_diffusion_time(fluid, eta),
-                 kt::max_viscosity_for_particle_diffusion_time(fluid, tau_p));
-    }
-  }
+// an impossible fluid: say which bound it violates, in both directions
+void DPDDesign::refuse(const Request &request, const kt::Design &design)
+{
+  const kt::FluidState &fluid = request.fluid;
+  const double eta = request.eta;
+  if (request.by_schmidt)
+    error->all(FLERR, "dpd/design: no exponent s > 0 gives eta = {} with Sc = {} at {} "
+               "(E = {:.6g}, needs E > 20): Sc must exceed {:.6g} at this eta, or eta must be "
+               "below {:.6g} at this Sc",
+               eta, request.target, request.state(), design.e, kt::min_schmidt_number(fluid, eta),
+               kt::max_viscosity_for_schmidt(fluid, request.target));
+  error->all(FLERR, "dpd/design: no exponent s > 0 gives eta = {} with tau_P = {} at {} "
+             "(E = {:.6g}, needs E > 20): tau_P must exceed {:.6g} at this eta, or eta must "
+             "be below {:.6g} at this tau_P",
+             eta, request.target, request.state(), design.e, kt::min_particle_diffusion_time(fluid, eta),
+             kt::max_viscosity_for_particle_diffusion_time(fluid, request.target));
+}
 
+// the design into equal-style variables NAME_s, NAME_gamma, ..., and its kinetic theory to the log
+void DPDDesign::store_and_report(const Request &request, const kt::Design &design)
+{
+  const kt::FluidState &fluid = request.fluid;
+  const std::string &name = request.name;
+  const double eta = request.eta;
   const double s = design.s;
   const double gamma = design.gamma;
   const double sigma = std::sqrt(2.0 * gamma * fluid.temperature);
@@ -129,9 +158,9 @@ void DPDDesign::command(int narg, char **arg)
   }
 
   if (comm->me == 0) {
-    std::string target = by_schmidt ? fmt::format("Sc = {}", keys[SC].value)
-                                    : fmt::format("tau_P = {}", keys[TAUP].value);
-    utils::logmesg(lmp, "dpd/design {}: eta = {} and {} at {}\n", name, eta, target, state);
+    const std::string target = request.by_schmidt ? fmt::format("Sc = {}", request.target)
+                                                  : fmt::format("tau_P = {}", request.target);
+    utils::logmesg(lmp, "dpd/design {}: eta = {} and {} at {}\n", name, eta, target, request.state());
     utils::logmesg(lmp, "  E = {:.8g}  ->  s = {:.8g}, gamma = {:.8g}, sigma = {:.8g}\n",
                    design.e, s, gamma, sigma);
     utils::logmesg(lmp, "  kinetic theory of this fluid: eta = {:.6g} (dissipative {:.6g} + "
