@@ -92,8 +92,7 @@ bool NeighborSafety::could_outrun(LAMMPS *lmp, int groupbit, const std::vector<d
   largest_displacements(lmp, groupbit, local + 1, &lead);
   reduce_with_flag(local, global, lmp->world);
   // the prediction uses the last force, not the coming one: a tenth of the skin is left for
-  // the difference (with the whole skin, 7 of 4,000 friction steps still found two atoms
-  // beyond it at m = 0.001, dt = 0.001; with 0.9 of it none, for 64 % more list builds)
+  // the difference
   constexpr double predicted_share = 0.9;
   return global[1] + global[2] > predicted_share * lmp->neighbor->skin;
 }

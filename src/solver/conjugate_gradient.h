@@ -59,8 +59,7 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
   // r: residual, z: preconditioned residual, w = A z, p: search direction, s = A p
   double *r = work.r.data(), *z = work.z.data(), *p = work.p.data(), *w = work.w.data(),
          *s = work.s.data();
-  // z = P r, projected. (Fusing this into the iteration's update loop, atom by atom, measured
-  // no faster: the update loop then no longer vectorises.)
+  // z = P r, projected (a separate pass: fused into the update loop, that loop no longer vectorises)
   auto precondition = [&]() {
     if (!block_inverse) {
       for (int k = 0; k < n; k++) z[k] = inv_diag[k] * r[k];
