@@ -2,19 +2,23 @@
 """Table of atom-steps/s per 'BENCH label' block of LAMMPS logs, with ratios to stock dpd + nve on
 the same atoms (atomic, or atom_style sphere for dpd/fpm)
 and the share of the loop time in LAMMPS's timing sections (pair, neighbor, comm, modify = fixes)."""
+import os
 import re
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+from etddpd.lammps_output import loop_times  # noqa: E402
 
 SECTIONS = ("Pair", "Neigh", "Comm", "Modify")
 
 
 def parse(path):
-    text = open(path).read()
+    with open(path) as f:
+        text = f.read()
     results = []
     for block in re.split(r"^BENCH ", text, flags=re.M)[1:]:
         label = block.splitlines()[0].strip()
-        m = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms", block)
-        seconds, procs, steps, atoms = float(m.group(1)), int(m.group(2)), int(m.group(3)), int(m.group(4))
+        seconds, procs, steps, atoms = loop_times(block)[0]
         shares = {}
         for name in SECTIONS:
             # "Pair    | min | avg | max | %varavg | %total"

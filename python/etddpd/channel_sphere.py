@@ -38,6 +38,9 @@ import sys
 
 import numpy as np
 
+from .lammps_output import LammpsOutputError, read_ave_chunk, read_ave_time
+from .statistics import batch_means, standard_error
+
 
 def correlation_cd(re):
     """Brown and Lawler's drag correlation for a sphere in unbounded uniform flow."""
@@ -115,57 +118,49 @@ def confined_radius(result, args):
     return centre, 0.5 * (high - low)
 
 
-def read_ave_time(path):
-    """(column names, array[row, column]) of a fix ave/time file in scalar/vector mode."""
-    names, rows = None, []
-    with open(path) as f:
-        for line in f:
-            if line.startswith('#'):
-                words = line[1:].split()
-                if words and words[0] == 'TimeStep':
-                    names = words
-                continue
-            if line.strip():
-                try:
-                    rows.append([float(w) for w in line.split()])
-                except ValueError:
-                    sys.exit(f'channel_sphere: {path} is not a fix ave/time file: {line.strip()!r}')
-    if names is None or not rows:
-        sys.exit(f'channel_sphere: {path} is not a fix ave/time file with data')
-    data = np.array(rows)
-    if data.shape[1] != len(names):
-        sys.exit(f'channel_sphere: {path}: {data.shape[1]} columns, header names {len(names)}')
-    return names, data
+def read_drag(path):
+    """A drag file of the examples (fix ave/time, scalar mode) as a Table."""
+    try:
+        table = read_ave_time(path)
+    except LammpsOutputError as error:
+        sys.exit(f'channel_sphere: {error}')
+    if table.names is None:
+        sys.exit(f'channel_sphere: {path} is not a fix ave/time file with data (its header does '
+                 f'not name its {table.data.shape[1]} columns)')
+    return table
+
+
+def read_chunks(path):
+    """A profile or wall-radius file of the examples (fix ave/chunk) as Blocks."""
+    try:
+        blocks = read_ave_chunk(path)
+    except LammpsOutputError as error:
+        sys.exit(f'channel_sphere: {error}')
+    if blocks.names is None:
+        sys.exit(f'channel_sphere: {path} is not a fix ave/chunk file with data')
+    return blocks
 
 
 def batch_mean(values, batches):
     """Mean and its standard error from `batches` contiguous batch means."""
     values = np.asarray(values, dtype=float)
-    batches = max(2, min(batches, len(values)))
-    usable = len(values) - len(values) % batches
-    means = values[len(values) - usable:].reshape(batches, -1).mean(axis=1)
-    return float(means.mean()), float(means.std(ddof=1) / math.sqrt(batches))
-
-
-def column(names, data, *candidates):
-    for name in candidates:
-        if name in names:
-            return data[:, names.index(name)]
-    return None
+    means = batch_means(values, max(2, min(batches, len(values))))
+    return float(means.mean()), float(standard_error(means))
 
 
 def analyse(path, args):
-    names, data = read_ave_time(path)
-    start = int(round(args.discard * len(data)))
-    data = data[start:]
-    if len(data) < 2 * args.batches:
-        sys.exit(f'channel_sphere: {path}: only {len(data)} rows after discarding, '
+    table = read_drag(path)
+    start = int(round(args.discard * len(table.data)))
+    table = table._replace(data=table.data[start:])
+    rows = len(table.data)
+    if rows < 2 * args.batches:
+        sys.exit(f'channel_sphere: {path}: only {rows} rows after discarding, '
                  f'need at least {2 * args.batches}')
-    total = data[:, 1]
-    conservative = column(names, data, 'c_split[1]')
-    dissipative = column(names, data, 'c_split[4]')
-    random_part = column(names, data, 'c_split[7]')
-    velocity = column(names, data, args.velocity)
+    total = table.data[:, 1]
+    conservative = table.get('c_split[1]')
+    dissipative = table.get('c_split[4]')
+    random_part = table.get('c_split[7]')
+    velocity = table.get(args.velocity)
     if velocity is None:
         sys.exit(f'channel_sphere: {path} has no {args.velocity} column (mean fluid velocity)')
     use_split = conservative is not None and args.force != 'total'
@@ -183,7 +178,7 @@ def analyse(path, args):
     a_eff = drag / (6.0 * math.pi * args.eta * u)
     a_eff_err = a_eff * math.hypot(drag_err / drag, u_err / u)
     result = {
-        'file': path, 'rows': len(data), 'U': u, 'U_err': u_err, 'Re': re, 'Re_err': re_err,
+        'file': path, 'rows': rows, 'U': u, 'U_err': u_err, 'Re': re, 'Re_err': re_err,
         'F_D': drag, 'F_D_err': drag_err, 'F_total': total_mean, 'F_total_err': total_err,
         'estimator': 'C+D' if use_split else 'total',
         'C_D': cd, 'C_D_err': cd_err, 'a_eff': a_eff, 'a_eff_err': a_eff_err,
@@ -193,10 +188,10 @@ def analyse(path, args):
         result['F_C'] = batch_mean(conservative, args.batches)[0]
         result['F_D_diss'] = batch_mean(dissipative, args.batches)[0]
         result['F_R'], result['F_R_err'] = batch_mean(random_part, args.batches)
-    fy = column(names, data, 'c_fsphere[2]', 'c_fcolloid[2]')
+    fy = table.get('c_fsphere[2]', 'c_fcolloid[2]')
     if fy is not None:
         result['F_y'], result['F_y_err'] = batch_mean(fy, args.batches)
-    temperature = column(names, data, 'c_tfluid')
+    temperature = table.get('c_tfluid')
     if temperature is not None:
         result['kT'] = float(temperature.mean())
     return result
@@ -234,7 +229,8 @@ def analyse_pooled(spec, args):
     return results[0] if len(results) == 1 else pool(results)
 
 
-def drag_command(args):
+def drag_series(args):
+    """(label, files) of the drag command after checking its options."""
     series = []
     for spec in args.series or []:
         label, _, files = spec.partition(':')
@@ -250,8 +246,10 @@ def drag_command(args):
             sys.exit(f'channel_sphere: drag --{name} must be positive, not {length}')
     if args.centre_line and args.tube is None:
         sys.exit('channel_sphere: drag --centre-line needs --tube')
-    confined = args.slit is not None or args.tube is not None
-    results = []
+    return series
+
+
+def print_drag_header(args, confined):
     print(f'# rho {args.rho} d {args.d} eta {args.eta}; discard {args.discard}, '
           f'{args.batches} batches; errors are one standard error')
     if confined:
@@ -262,22 +260,34 @@ def drag_command(args):
     print(f'{"series":>10} {"file":>28} {"U":>14} {"Re":>13} {"F_D":>14} {"F_total":>14} '
           f'{"C_D":>14} {"corr.":>6} {"C_D/corr":>8} {"24/Re":>6} {"a_eff":>12}'
           + (f' {"a_h":>12}' if confined else ''))
+
+
+def print_drag_row(label, path, r, confined):
+    print(f'{label:>10} {path[-28:]:>28} {r["U"]:7.4f}+-{r["U_err"]:.4f} '
+          f'{r["Re"]:6.3f}+-{r["Re_err"]:.3f} {r["F_D"]:7.3f}+-{r["F_D_err"]:5.3f} '
+          f'{r["F_total"]:7.3f}+-{r["F_total_err"]:5.3f} '
+          f'{r["C_D"]:7.3f}+-{r["C_D_err"]:5.3f} {r["C_D_correlation"]:6.3f} '
+          f'{r["C_D"] / r["C_D_correlation"]:8.3f} {r["C_D_stokes"]:6.3f} '
+          f'{r["a_eff"]:5.3f}+-{r["a_eff_err"]:.3f}', end='')
+    if confined:
+        print(f' {r["a_h"]:5.3f}+-{r["a_h_err"]:.3f}' if r['a_h'] is not None
+              else '   beyond the wall factor\'s range', end='')
+    print()
+
+
+def drag_command(args):
+    series = drag_series(args)
+    confined = args.slit is not None or args.tube is not None
+    print_drag_header(args, confined)
+    results = []
     for label, files in series:
         for path in files:
             r = analyse_pooled(path, args)
             r['series'] = label
-            results.append(r)
-            print(f'{label:>10} {path[-28:]:>28} {r["U"]:7.4f}+-{r["U_err"]:.4f} '
-                  f'{r["Re"]:6.3f}+-{r["Re_err"]:.3f} {r["F_D"]:7.3f}+-{r["F_D_err"]:5.3f} '
-                  f'{r["F_total"]:7.3f}+-{r["F_total_err"]:5.3f} '
-                  f'{r["C_D"]:7.3f}+-{r["C_D_err"]:5.3f} {r["C_D_correlation"]:6.3f} '
-                  f'{r["C_D"] / r["C_D_correlation"]:8.3f} {r["C_D_stokes"]:6.3f} '
-                  f'{r["a_eff"]:5.3f}+-{r["a_eff_err"]:.3f}', end='')
             if confined:
                 r['a_h'], r['a_h_err'] = confined_radius(r, args)
-                print(f' {r["a_h"]:5.3f}+-{r["a_h_err"]:.3f}' if r['a_h'] is not None
-                      else '   beyond the wall factor\'s range', end='')
-            print()
+            results.append(r)
+            print_drag_row(label, path, r, confined)
     if args.json:
         with open(args.json, 'w') as f:
             json.dump(results, f, indent=1)
@@ -328,40 +338,36 @@ def plot_drag(results, args):
               legend_size=8, which='both')
 
 
-def read_ave_chunk(path):
-    """Blocks of a fix ave/chunk file: (column names, array[block, chunk, column])."""
-    names, blocks = None, []
-    with open(path) as f:
-        lines = [line for line in f if line.strip()]
-    i = 0
-    while i < len(lines):
-        line = lines[i]
-        if line.startswith('#'):
-            words = line[1:].split()
-            if words and words[0] == 'Chunk':
-                names = words
-            i += 1
-            continue
-        nchunks = int(line.split()[1])
-        rows = [[float(w) for w in lines[i + 1 + k].split()] for k in range(nchunks)]
-        blocks.append(rows)
-        i += 1 + nchunks
-    if names is None or not blocks:
-        sys.exit(f'channel_sphere: {path} is not a fix ave/chunk file with data')
-    return names, np.array(blocks)
+def wall_radius_bins(path, discard):
+    """The blocks of a wall_radius file after --discard, over the bins that ever hold a wall
+    particle (the box's last, partial bin may hold none and then has no radius): x of the bins,
+    count and mean radius per block and bin, and the blocks' steps."""
+    blocks = read_chunks(path)
+    start = int(round(discard * len(blocks.steps)))
+    count = blocks.column('Ncount')[start:]
+    radius = blocks.column('v_wall_r')[start:]
+    keep = count.sum(axis=0) > 0
+    return blocks.column('Coord1')[start][keep], count[:, keep], radius[:, keep], blocks.steps[start:]
 
 
-def read_chunk_steps(path):
-    """Time steps of the blocks of a fix ave/chunk file."""
-    steps = []
-    with open(path) as f:
-        lines = [line for line in f if line.strip() and not line.startswith('#')]
-    i = 0
-    while i < len(lines):
-        words = lines[i].split()
-        steps.append(int(words[0]))
-        i += 1 + int(words[1])
-    return steps
+def radius_error(per_block, batches):
+    """Batch error of a per-block mean radius, only with enough blocks (4) to batch."""
+    if len(per_block) < 4:
+        return float('nan')
+    return batch_mean(per_block, min(batches, len(per_block) // 2))[1]
+
+
+def near_sphere_text(path, x, count, radius, args):
+    """'; within NEAR of x = X: R +- E', the mean radius of the bins near the sphere."""
+    centre = 0.5 * (x.min() + x.max()) if args.sphere_x is None else args.sphere_x
+    close = np.abs(x - centre) < args.near
+    if not close.any():
+        sys.exit(f'channel_sphere: no bin of {path} lies within {args.near} of x = {centre}')
+    near_block = (radius[:, close] * count[:, close]).sum(axis=1) / count[:, close].sum(axis=1)
+    text = f'; within {args.near:g} of x = {centre:.2f}: {near_block.mean():.4f}'
+    if len(near_block) >= 4:
+        text += f' +- {radius_error(near_block, args.batches):.4f}'
+    return text
 
 
 def radius_command(args):
@@ -369,48 +375,25 @@ def radius_command(args):
     channel): averages the blocks after --discard, per bin and overall."""
     out = []
     for path in args.files:
-        names, blocks = read_ave_chunk(path)
-        steps = read_chunk_steps(path)
-        start = int(round(args.discard * len(blocks)))
-        blocks = blocks[start:]
-        x = blocks[0, :, names.index('Coord1')]
-        count = blocks[:, :, names.index('Ncount')]
-        radius = blocks[:, :, names.index('v_wall_r')]
-        weights = count.sum(axis=0)
-        keep = weights > 0              # bins never holding a wall particle (the box's last,
-        x, weights = x[keep], weights[keep]     # partial bin) have no radius
-        count, radius = count[:, keep], radius[:, keep]
-        mean_r = (radius * count).sum(axis=0) / weights
+        x, count, radius, steps = wall_radius_bins(path, args.discard)
+        mean_r = (radius * count).sum(axis=0) / count.sum(axis=0)
         per_block = (radius * count).sum(axis=1) / count.sum(axis=1)
         overall = float(per_block.mean())
-        if len(blocks) >= 4:        # batch error only with enough blocks to batch
-            overall_err = batch_mean(per_block, min(args.batches, len(blocks) // 2))[1]
-            err_text = f'{overall_err:.4f}'
-        else:
-            overall_err, err_text = float('nan'), 'n/a (fewer than 4 blocks)'
+        overall_err = radius_error(per_block, args.batches)
+        err_text = f'{overall_err:.4f}' if len(steps) >= 4 else 'n/a (fewer than 4 blocks)'
         if args.each:               # one profile per kept block: a wall that is still moving
-            for k in range(len(blocks)):
-                step = int(steps[start + k]) if steps else k
+            for k, step in enumerate(steps):
                 prof = np.where(count[k] > 0, radius[k], np.nan)
-                print(f'  block at step {step}: ' + ' '.join(f'{v:.2f}' for v in prof))
-                out.append((f'{path.split("/")[-1]} step {step}', x, prof, None, None))
+                print(f'  block at step {int(step)}: ' + ' '.join(f'{v:.2f}' for v in prof))
+                out.append((f'{path.split("/")[-1]} step {int(step)}', x, prof))
         else:
-            out.append((path, x, mean_r, overall, overall_err))
-        near_text = ''
-        if args.near is not None:   # the bins within --near of the sphere (the box's middle)
-            centre = 0.5 * (x.min() + x.max()) if args.sphere_x is None else args.sphere_x
-            close = np.abs(x - centre) < args.near
-            if not close.any():
-                sys.exit(f'channel_sphere: no bin of {path} lies within {args.near} of x = {centre}')
-            near_block = (radius[:, close] * count[:, close]).sum(axis=1) / count[:, close].sum(axis=1)
-            near_text = f'; within {args.near:g} of x = {centre:.2f}: {near_block.mean():.4f}'
-            if len(blocks) >= 4:
-                near_text += f' +- {batch_mean(near_block, min(args.batches, len(blocks) // 2))[1]:.4f}'
+            out.append((path, x, mean_r))
+        near_text = '' if args.near is None else near_sphere_text(path, x, count, radius, args)
         print(f'{path}: mean wall radius {overall:.4f} +- {err_text}; '
               f'min over x {mean_r.min():.4f}, max {mean_r.max():.4f}{near_text}')
     if args.png:
         fig, ax = new_plot()
-        for path, x, mean_r, _, _ in out:
+        for path, x, mean_r in out:
             label = path.split('/')[-1].replace('wall_radius.', '')
             ax.plot(x, mean_r, '-', label=label)
         save_plot(fig, ax, 'x (channel axis)', 'mean radial distance of wall particles', args.png,
@@ -431,14 +414,15 @@ def parabola_fit(r, u, weight):
 def read_radial_bins(path, discard, sphere_x=None):
     """A velocity_profile / wall_profile file of in.sphere_compliant (chunks of bin/cylinder:
     radial bin centre Coord1, slab centre Coord2) after dropping the first --discard fraction
-    of its blocks: (names, blocks, radius per chunk, the distinct radii, mask of the chunks in
+    of its blocks: (the blocks, radius per chunk, the distinct radii, mask of the chunks in
     the slabs more than a quarter box from the sphere, total length of those slabs)."""
-    names, blocks = read_ave_chunk(path)
-    blocks = blocks[int(round(discard * len(blocks))):]
-    if len(blocks) < 2:
+    blocks = read_chunks(path)
+    start = int(round(discard * len(blocks.steps)))
+    blocks = blocks._replace(steps=blocks.steps[start:], data=blocks.data[start:])
+    if len(blocks.steps) < 2:
         sys.exit(f'channel_sphere: {path} has fewer than 2 blocks after --discard')
-    radius = blocks[0, :, names.index('Coord1')]
-    axial = blocks[0, :, names.index('Coord2')]
+    radius = blocks.column('Coord1')[0]
+    axial = blocks.column('Coord2')[0]
     slabs = np.unique(axial)
     if len(slabs) < 2:
         sys.exit(f'channel_sphere: {path} needs at least two slabs along the axis')
@@ -447,7 +431,34 @@ def read_radial_bins(path, discard, sphere_x=None):
     if not far.any():
         sys.exit(f'channel_sphere: {path} has no slab farther than a quarter box from the sphere')
     far_length = (slabs[1] - slabs[0]) * len(np.unique(axial[far]))
-    return names, blocks, radius, np.unique(radius), far, far_length
+    return blocks, radius, np.unique(radius), far, far_length
+
+
+def ring_profile(count, vx, radius, far, rings, rows):
+    """Count-weighted velocity per ring over the far slabs and the given blocks, and the count."""
+    c = count[rows][:, far]
+    m = vx[rows][:, far] * c
+    u = np.array([m[:, radius[far] == ring].sum() for ring in rings])
+    n = np.array([c[:, radius[far] == ring].sum() for ring in rings])
+    return np.where(n > 0, u / np.maximum(n, 1e-300), 0.0), n
+
+
+def velocity_fit(path, args):
+    """The far-slab profile of one file and its Poiseuille fit over r < --fit, with the errors
+    of the fit over --batches batches of blocks: (rings, u, n, v_c, r_h, errors)."""
+    blocks, radius, rings, far, _ = read_radial_bins(path, args.discard, args.sphere_x)
+    count, vx = blocks.column('Ncount'), blocks.column('vx')
+    u, n = ring_profile(count, vx, radius, far, rings, slice(None))
+    inside = (rings < args.fit) & (n > 0)
+    if inside.sum() < 3:
+        sys.exit(f'channel_sphere: fewer than 3 radial bins of {path} hold fluid inside --fit {args.fit}')
+    v_c, r_h = parabola_fit(rings[inside], u[inside], n[inside])
+    fits = []
+    for rows in np.array_split(np.arange(len(blocks.steps)), min(args.batches, len(blocks.steps))):
+        ub, nb = ring_profile(count, vx, radius, far, rings, rows)
+        ok = (rings < args.fit) & (nb > 0)
+        fits.append(parabola_fit(rings[ok], ub[ok], nb[ok]))
+    return rings, u, n, v_c, r_h, standard_error(fits)
 
 
 def velocity_command(args):
@@ -460,30 +471,7 @@ def velocity_command(args):
         sys.exit('channel_sphere: velocity --batches must be at least 2')
     out = []
     for path in args.files:
-        names, blocks, radius, rings, far, _ = read_radial_bins(path, args.discard, args.sphere_x)
-        count = blocks[:, :, names.index('Ncount')]
-        vx = blocks[:, :, names.index('vx')]
-
-        def profile(rows):
-            c = count[rows][:, far]
-            m = (vx[rows][:, far] * c)
-            u = np.array([m[:, radius[far] == ring].sum() for ring in rings])
-            n = np.array([c[:, radius[far] == ring].sum() for ring in rings])
-            return np.where(n > 0, u / np.maximum(n, 1e-300), 0.0), n
-
-        u, n = profile(slice(None))
-        inside = (rings < args.fit) & (n > 0)
-        if inside.sum() < 3:
-            sys.exit(f'channel_sphere: fewer than 3 radial bins of {path} hold fluid inside --fit {args.fit}')
-        v_c, r_h = parabola_fit(rings[inside], u[inside], n[inside])
-        nb = min(args.batches, len(blocks))
-        fits = []
-        for rows in np.array_split(np.arange(len(blocks)), nb):
-            ub, nb_count = profile(rows)
-            ok = (rings < args.fit) & (nb_count > 0)
-            fits.append(parabola_fit(rings[ok], ub[ok], nb_count[ok]))
-        fits = np.array(fits)
-        err = fits.std(axis=0, ddof=1) / math.sqrt(len(fits))
+        rings, u, n, v_c, r_h, err = velocity_fit(path, args)
         print(f'{path}: centre-line velocity {v_c:.4f} +- {err[0]:.4f}, hydrodynamic radius '
               f'{r_h:.3f} +- {err[1]:.3f} (Poiseuille fit over r < {args.fit:g}, slabs away from the sphere)')
         out.append((path, rings, u, n, v_c, r_h))
@@ -504,8 +492,8 @@ def density_command(args):
     for spec in args.files:             # LABEL=FILE names a curve of the plot
         label, _, path = spec.rpartition('=')
         labels.append(label or path.split('/')[-1])
-        names, blocks, radius, these, far, length = read_radial_bins(path, args.discard)
-        count = blocks[:, :, names.index('Ncount')].mean(axis=0)
+        blocks, radius, these, far, length = read_radial_bins(path, args.discard)
+        count = blocks.column('Ncount').mean(axis=0)
         if rings is not None and (len(these) != len(rings) or np.abs(these - rings).max() > 1e-6):
             sys.exit(f'channel_sphere: {path} has other radial bins than the first file')
         rings = these
@@ -541,13 +529,7 @@ def tube_command(args):
         print(f'{r:8.4f}  {lam:6.4f}  {k_rest:12.4f}  {k_flow:16.4f}  {k_flow / first:16.4f}')
 
 
-def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    sub = parser.add_subparsers(dest='command', required=True)
-    start_up = argparse.ArgumentParser(add_help=False)     # every subcommand but tube
-    start_up.add_argument('--discard', type=float, default=0.2,
-                          help='fraction of the rows (blocks) dropped at the start')
+def add_drag_parser(sub, start_up):
     drag = sub.add_parser('drag', parents=[start_up], help='Re and C_D from drag files')
     drag.add_argument('files', nargs='*',
                       help='drag files; FILE1+FILE2 pools independent runs of one case')
@@ -577,6 +559,9 @@ def main(argv=None):
     drag.add_argument('--png')
     drag.add_argument('--title')
     drag.add_argument('--json')
+
+
+def add_profile_parsers(sub, start_up):
     radius = sub.add_parser('radius', parents=[start_up], help='mean wall radius along the axis')
     radius.add_argument('files', nargs='+')
     radius.add_argument('--batches', type=int, default=10)
@@ -602,22 +587,33 @@ def main(argv=None):
     density.add_argument('--rmin', type=float, default=0.0)
     density.add_argument('--rmax', type=float, default=1e30)
     density.add_argument('--png')
+
+
+def parse_args(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest='command', required=True)
+    start_up = argparse.ArgumentParser(add_help=False)     # every subcommand but tube
+    start_up.add_argument('--discard', type=float, default=0.2,
+                          help='fraction of the rows (blocks) dropped at the start')
+    add_drag_parser(sub, start_up)
+    add_profile_parsers(sub, start_up)
     tube = sub.add_parser('tube', help='wall factor of a sphere on the axis of a tube')
     tube.add_argument('radii', nargs='+', type=float, help='tube radii (the first is the reference)')
     tube.add_argument('--d', type=float, default=3.0, help='sphere diameter')
     args = parser.parse_args(argv)
     if not 0.0 <= getattr(args, 'discard', 0.0) < 1.0:     # every subcommand but tube has one
         sys.exit('channel_sphere: --discard must be in [0, 1)')
-    if args.command == 'tube':
-        tube_command(args)
-    elif args.command == 'velocity':
-        velocity_command(args)
-    elif args.command == 'density':
-        density_command(args)
-    elif args.command == 'drag':
-        drag_command(args)
-    else:
-        radius_command(args)
+    return args
+
+
+COMMANDS = {'drag': drag_command, 'radius': radius_command, 'velocity': velocity_command,
+            'density': density_command, 'tube': tube_command}
+
+
+def main(argv=None):
+    args = parse_args(argv)
+    COMMANDS[args.command](args)
 
 
 if __name__ == '__main__':

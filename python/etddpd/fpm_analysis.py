@@ -15,6 +15,9 @@ import os
 
 import numpy as np
 
+from .lammps_output import read_ave_chunk, read_ave_time, read_dump
+from .statistics import batch_means, standard_error
+
 PAPER_MU, PAPER_D, PAPER_R = 3.6388, 0.0533, 0.2737
 KT = 1.0
 HASIMOTO = 2.837297    # finite-size correction of D in a periodic cube (Hasimoto; Yeh and Hummer)
@@ -22,18 +25,12 @@ HASIMOTO = 2.837297    # finite-size correction of D in a periodic cube (Hasimot
 
 def read_last_chunk_block(path):
     """Last block of a fix ave/chunk file: rows of (chunk, coord, count, values...)."""
-    blocks, current = [], None
-    with open(path) as fh:
-        for line in fh:
-            if line.startswith('#'):
-                continue
-            fields = line.split()
-            if len(fields) == 3:
-                current = []
-                blocks.append(current)
-            else:
-                current.append([float(x) for x in fields])
-    return np.array(blocks[-1])
+    return read_ave_chunk(path).data[-1]
+
+
+def read_blocks(path):
+    """The rows of a fix ave/time file: step, then the values."""
+    return read_ave_time(path).data
 
 
 def viscosity(path, rho, g):
@@ -54,20 +51,7 @@ def viscosity(path, rho, g):
 
 def diffusion(path, dt_frame, fit_from, fit_to, ngroups=5):
     """MSD of the tracked atoms with every time origin; D from the slope over [fit_from, fit_to]."""
-    frames, current, reading = [], None, False
-    with open(path) as fh:
-        for line in fh:
-            if line.startswith('ITEM: ATOMS'):
-                current = []
-                frames.append(current)
-                reading = True
-                continue
-            if line.startswith('ITEM:'):
-                reading = False
-                continue
-            if reading:
-                current.append([float(x) for x in line.split()[1:4]])
-    pos = np.array(frames)    # (frames, atoms, 3), unwrapped
+    pos = read_dump(path).data[:, :, 1:4]    # (frames, atoms, 3): id xu yu zu, unwrapped
     nframes, natoms = pos.shape[0], pos.shape[1]
     lags = np.arange(1, int(fit_to / dt_frame) + 1)
     msd = np.array([np.mean(np.sum((pos[lag:] - pos[:-lag]) ** 2, axis=2), axis=0) for lag in lags])
@@ -81,21 +65,18 @@ def diffusion(path, dt_frame, fit_from, fit_to, ngroups=5):
     d_all = slope_d(msd)
     groups = np.array_split(np.arange(natoms), ngroups)
     d_groups = [slope_d(msd[:, gidx]) for gidx in groups]
-    return d_all, float(np.std(d_groups, ddof=1) / math.sqrt(ngroups)), natoms, nframes * dt_frame
+    return d_all, float(standard_error(d_groups)), natoms, nframes * dt_frame
 
 
 def torque(path, skip_blocks=0):
-    values = np.loadtxt(path, comments='#')
-    tz = values[skip_blocks:, 3]
-    return float(tz.mean()), float(tz.std(ddof=1) / math.sqrt(len(tz))), len(tz)
+    tz = read_blocks(path)[skip_blocks:, 3]
+    return float(tz.mean()), float(standard_error(tz)), len(tz)
 
 
 def batch_mean(x, nbatch=20):
     """Mean and standard error from nbatch consecutive batches (blocks may be correlated)."""
     x = np.asarray(x, dtype=float)
-    n = len(x) // nbatch * nbatch
-    b = x[len(x) - n:].reshape(nbatch, -1).mean(axis=1)
-    return float(x.mean()), float(b.std(ddof=1) / math.sqrt(nbatch))
+    return float(x.mean()), float(standard_error(batch_means(x, nbatch)))
 
 
 def hasimoto_k(phi):
@@ -115,14 +96,14 @@ def drag_radius(zeta, mu, L):
 def periodic_drag(path, L, g, nfluid, mu=PAPER_MU, R=PAPER_R, dt=0.01):
     """Fixed colloid in a periodic cube, fluid driven by g per fluid atom. Columns of the block
     file: step, fluid <v_x>, colloid f_x, f_y, f_z, torque_y, fluid kBT about its mean flow."""
-    d = np.loadtxt(path, comments='#')
+    d = read_blocks(path)
     natoms = nfluid + 1
     u, uerr = batch_mean(d[:, 1] * nfluid / natoms)       # superficial velocity
     fd, fderr = batch_mean(d[:, 2])                        # measured force on the colloid
     force = nfluid * g                                     # steady-state momentum balance
     # the fluid's total momentum is the slow variable: variance kBT / M, relaxation time
     # tau = M u / F; the standard error of its mean over a run t is sqrt(kBT/M) sqrt(2 tau / t).
-    # Batches shorter than a few tau underestimate it (L = 10), so the larger error is used.
+    # Batches shorter than a few tau underestimate it, so the larger of the two is used.
     t_run = (d[-1, 0] - d[0, 0] + (d[1, 0] - d[0, 0])) * dt
     tau = nfluid * u / force
     uerr_model = math.sqrt(KT / nfluid) * math.sqrt(2 * tau / t_run) * nfluid / natoms
@@ -150,7 +131,7 @@ def couette(prefix, H, zfit=2.5, mu=PAPER_MU, R=PAPER_R):
     vx = vals[:, 0]
     sel = np.abs(z) < zfit
     rate, v0 = np.polyfit(z[sel], vx[sel], 1)
-    d = np.loadtxt(prefix + '.colloid', comments='#')
+    d = read_blocks(prefix + '.colloid')
     t, terr = batch_mean(d[:, 2])
     w, werr = batch_mean(d[:, 3])
     half = rate / 2
@@ -170,7 +151,7 @@ def poiseuille(prefix, g, H, h, mu=PAPER_MU, R=PAPER_R, lx=15.0, ly=6.0):
     c = np.polyfit(z[sel], vx[sel], 2)
     zc = -H / 2 + h
     uh = float(np.polyval(c, zc))
-    d = np.loadtxt(prefix + '.colloid', comments='#')
+    d = read_blocks(prefix + '.colloid')
     f, ferr = batch_mean(d[:, 1])
     # far from the colloid the driving is rho g less the mean pressure gradient that balances
     # the drag, F / (Lx Ly H): (rho g - F/V) / (2 mu) = -c2
@@ -192,7 +173,7 @@ def two_spheres(path, L, g, nfluid, l, mu=PAPER_MU, R=PAPER_R):
     prediction is F = 6 pi mu R f(l) u / (1 - 2 x 2.837 R f(l) / L). Torque z: colloid 1 (lower
     y) and colloid 2 carry opposite torques; their half difference is compared with eq. 23 at the
     incident flow u_eff = F / (6 pi mu R f(l))."""
-    d = np.loadtxt(path, comments='#')
+    d = read_blocks(path)
     natoms = nfluid + 2
     u, uerr = batch_mean(d[:, 1] * nfluid / natoms)
     force = nfluid * g / 2
@@ -211,7 +192,7 @@ def two_spheres(path, L, g, nfluid, l, mu=PAPER_MU, R=PAPER_R):
                 Fd=fd, Fderr=fderr, Re=3.0 * u * R / mu, nblocks=len(d), Tk=float(d[:, 6].mean()))
 
 
-def main():
+def parse_args(argv=None):
     ap = argparse.ArgumentParser()
     ap.add_argument('dir')
     ap.add_argument('--rho', type=float, default=3.0)
@@ -233,8 +214,11 @@ def main():
     ap.add_argument('--pair', nargs=6, action='append', default=[],
                     metavar=('LABEL', 'FILE', 'L', 'G', 'NFLUID', 'l'),
                     help='two-sphere block file (in.fpm_periodic_drag with l > 0); repeatable')
-    a = ap.parse_args()
-    rows = []
+    return ap.parse_args(argv)
+
+
+def viscosity_rows(a, rows):
+    """The reverse-Poiseuille viscosity (the paper's where the run is missing)."""
     mu = PAPER_MU
     f = os.path.join(a.dir, 'fpm_viscosity.profile')
     if os.path.exists(f):
@@ -242,6 +226,11 @@ def main():
         rows.append(('fluid viscosity mu (reverse Poiseuille)', f'{PAPER_MU}', f'{mu:.4f} +- {err:.4f}',
                      f'{100 * (mu / PAPER_MU - 1):+.1f} %'))
         print(f'# viscosity: max |v| = {vmax:.3f}, halves differ by {2 * err:.4f}')
+    return mu
+
+
+def diffusion_rows(a, mu, rows):
+    """The colloid's D and Stokes-Einstein radius (the paper's radius where the run is missing)."""
     R = PAPER_R
     f = os.path.join(a.dir, 'fpm_diffusion.track')
     if os.path.exists(f):
@@ -256,6 +245,11 @@ def main():
                      f'{R:.4f} +- {R * derr / d_inf:.4f} (uncorrected D: {r_box:.4f})',
                      f'{100 * (R / PAPER_R - 1):+.1f} %'))
         print(f'# diffusion: {n} colloids over {span:g} time units, MSD slope fitted on {a.fit}')
+    return R
+
+
+def torque_rows(a, mu, R, rows):
+    """The rotating sphere's torque against Stokes, and the extra torque files of --torque."""
     f = os.path.join(a.dir, 'fpm_rotating_sphere.torque')
     if os.path.exists(f):
         t, terr, nb = torque(f)
@@ -273,6 +267,10 @@ def main():
         rows.append((f'torque T / (-8 pi mu Omega R^3), {label}, Omega = {float(omega):g}, {nb} blocks',
                      '1 (within 1.3 %)', f'{t / stokes:.3f} +- {terr / abs(stokes):.3f}',
                      f'T = {t:.3f} +- {terr:.3f}, Stokes {stokes:.3f}'))
+
+
+def drag_rows(a, rows):
+    """--drag: the periodic array's drag against Stokes with Hasimoto's factor."""
     for label, path, L, g, nfluid in a.drag:
         r = periodic_drag(path, float(L), float(g), int(nfluid))
         rows.append((f'periodic-array drag F / (6 pi mu u R K), {label}: L = {float(L):g}, phi = {r["phi"]:.3g}, '
@@ -284,6 +282,10 @@ def main():
                      f'{r["uerr_model"]:.4f})',
                      f'drag radius {r["R_drag"]:.4f} (paper 0.2737), uncorrected F/(6 pi mu u R) = '
                      f'{r["F"] / r["stokes"]:.3f}, fluid kBT {r["T"]:.4f}'))
+
+
+def couette_rows(a, rows):
+    """--couette: torque on fixed colloids and spin of free ones in Couette flow."""
     for label, prefix, H in a.couette:
         r = couette(prefix, float(H))
         rows.append((f'Couette, {label}: shear rate {r["rate"]:.4f} ((1/2) curl v = {r["half"]:.4f}), '
@@ -297,6 +299,10 @@ def main():
         rows.append((f'Couette, {label}: spin of the free colloids / (1/2) curl v', '',
                      f'{r["Omega"] / r["half"]:.3f} +- {r["Omega_err"] / r["half"]:.3f} '
                      f'(Omega = {r["Omega"]:.4f} +- {r["Omega_err"]:.4f})', ''))
+
+
+def poiseuille_rows(a, rows):
+    """--poiseuille: drag and torque on a fixed colloid near a wall in Poiseuille flow."""
     for label, prefix, g, H, h in a.poiseuille:
         r = poiseuille(prefix, float(g), float(H), float(h))
         rows.append((f'Poiseuille, {label}: g = {float(g):g}, u_h = {r["uh"]:.4f} (far-field parabola, '
@@ -308,6 +314,10 @@ def main():
         rows.append((f'Poiseuille, {label}: torque T / T_eq22', 'Table 2: 1.066, 1.038, 0.994',
                      f'{r["T"] / r["T_the"]:.3f} +- {r["Terr"] / abs(r["T_the"]):.3f} '
                      f'(T = {r["T"]:.4f} +- {r["Terr"]:.4f}, eq. 22 {r["T_the"]:.4f})', ''))
+
+
+def pair_rows(a, rows):
+    """--pair: drag and torque on two fixed colloids in a periodic cube."""
     for label, path, L, g, nfluid, l in a.pair:
         r = two_spheres(path, float(L), float(g), int(nfluid), float(l))
         rows.append((f'two spheres, {label}: l = {float(l):g}, L = {float(L):g}, drag per sphere F = N g / 2 = '
@@ -320,6 +330,18 @@ def main():
         rows.append((f'two spheres, {label}: torque (half difference of the two) / eq. 23 at u_eff = {r["u_eff"]:.4f}',
                      'Table 3: 0.969, 0.974, 1.066', f'{r["T"] / r["T_the"]:.3f} +- {r["Terr"] / abs(r["T_the"]):.3f} '
                      f'(T = {r["T"]:.4f} +- {r["Terr"]:.4f}, eq. 23 {r["T_the"]:.4f})', ''))
+
+
+def main(argv=None):
+    a = parse_args(argv)
+    rows = []
+    mu = viscosity_rows(a, rows)
+    R = diffusion_rows(a, mu, rows)
+    torque_rows(a, mu, R, rows)
+    drag_rows(a, rows)
+    couette_rows(a, rows)
+    poiseuille_rows(a, rows)
+    pair_rows(a, rows)
     print('| quantity | paper | this package | difference |')
     print('|---|---|---|---|')
     for r in rows:

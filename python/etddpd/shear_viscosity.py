@@ -189,7 +189,7 @@ def plot(table, reference, path, eta0=None, eta0_label="zero-shear eta_0 (TCAF)"
     plt.close(fig)
 
 
-def main(argv=None):
+def parse_args(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("results", help="results file of validation/shear/run.sh")
     parser.add_argument("--reference", default="stock",
@@ -198,16 +198,22 @@ def main(argv=None):
     parser.add_argument("--plot", help="write eta against rate to this PNG")
     parser.add_argument("--tcaf", help="tcaf_fit.py summary with the zero-shear eta_0")
     parser.add_argument("--eta0", type=parse_eta0, help="zero-shear eta_0 as VALUE[+-ERR]")
-    args = parser.parse_args(argv)
+    return parser.parse_args(argv)
 
+
+def zero_shear(args):
+    """(eta_0, error) from --tcaf, else --eta0, else None."""
+    return read_tcaf(args.tcaf) if args.tcaf else args.eta0
+
+
+def main(argv=None):
+    args = parse_args(argv)
     table = summarise(read_results(args.results))
     references = [r for r in args.reference.split(",") if r]
     print(markdown(table, references))
     print("eta: mean over seeds +- its standard error; spread: sample standard deviation of the "
           "runs; ratio errors from the pooled spread.")
-    eta0 = args.eta0
-    if args.tcaf:
-        eta0 = read_tcaf(args.tcaf)
+    eta0 = zero_shear(args)
     if eta0 is not None:
         print(f"zero-shear eta_0 = {eta0[0]:.3f} +- {fmt(eta0[1])}")
     if args.plot:

@@ -30,26 +30,16 @@ import sys
 import numpy as np
 from scipy.optimize import curve_fit
 
+from . import statistics
+from .lammps_output import read_ave_correlate
+
 
 # ---- reading -------------------------------------------------------------------------------
 
 def read_correlate(path):
     """Blocks of one fix ave/correlate file: list of (timestep, lags, counts, values)."""
-    blocks = []
-    with open(path) as handle:
-        lines = [line for line in handle if line.strip() and not line.startswith("#")]
-    i = 0
-    while i < len(lines):
-        head = lines[i].split()
-        if len(head) != 2:
-            raise ValueError(f"{path}: expected 'timestep nrows', got {lines[i]!r}")
-        step, nrows = int(head[0]), int(head[1])
-        rows = np.array([[float(x) for x in line.split()] for line in lines[i + 1:i + 1 + nrows]])
-        if rows.shape[0] != nrows:
-            break    # a block still being written
-        blocks.append((step, rows[:, 1], rows[:, 2], rows[:, 3:]))
-        i += 1 + nrows
-    return blocks
+    blocks = read_ave_correlate(path)    # rows: index, lag (steps), samples, values
+    return [(step, rows[:, 1], rows[:, 2], rows[:, 3:]) for step, rows in zip(blocks.steps, blocks.data)]
 
 
 def transverse_correlation(values, nwave):
@@ -154,26 +144,21 @@ def fit_maxwell(t, c_norm, k2_over_rho, eta_guess):
 
 
 def standard_error(samples):
+    """Standard error of the finite samples (a block whose fit failed gives nan)."""
     samples = np.asarray(samples, dtype=float)
-    samples = samples[np.isfinite(samples)]
-    if samples.size < 2:
-        return float("nan")
-    return float(np.std(samples, ddof=1) / math.sqrt(samples.size))
+    return float(statistics.standard_error(samples[np.isfinite(samples)]))
 
 
 def extrapolate(k, eta, err, nfit):
-    """eta_k = eta_0 + a k^2 on the nfit smallest k: (eta0, a, err_eta0, err_a)."""
+    """eta_k = eta_0 + a k^2 on the nfit smallest k: (eta0, a, err_eta0, err_a). Weighted by the
+    errors of eta_k where they all exist; else unweighted, without errors."""
     order = np.argsort(k)[:nfit]
     x, y, s = k[order] ** 2, eta[order], err[order]
-    design = np.vstack([np.ones_like(x), x]).T
     if np.all(np.isfinite(s)) and np.all(s > 0):
-        w = 1.0 / s ** 2
-        cov = np.linalg.inv(design.T @ (design * w[:, None]))
-        coef = cov @ (design.T @ (w * y))
-    else:
-        coef, *_ = np.linalg.lstsq(design, y, rcond=None)
-        cov = np.full((2, 2), np.nan)
-    return coef[0], coef[1], math.sqrt(cov[0, 0]), math.sqrt(cov[1, 1])
+        (a, eta0), cov = np.polyfit(x, y, 1, w=1.0 / s, cov="unscaled")
+        return eta0, a, math.sqrt(cov[1, 1]), math.sqrt(cov[0, 0])
+    a, eta0 = np.polyfit(x, y, 1)
+    return eta0, a, float("nan"), float("nan")
 
 
 def analyse(lags, corr, box, rho, dt, threshold=0.05, natoms=None):
@@ -212,19 +197,23 @@ def analyse(lags, corr, box, rho, dt, threshold=0.05, natoms=None):
 
 # ---- output --------------------------------------------------------------------------------
 
-def write_outputs(args, t, mean, results, nblock):
-    k = np.array([r["k"] for r in results])
+def write_table(path, results, nblock):
+    """One row per k: the fits and their errors."""
     columns = ["j", "k", "eta_newton", "err_newton", "eta_maxwell", "err_maxwell",
                "tau_maxwell", "err_tau", "omega2", "n_fit", "t_fit", "C0"]
     if "kT_over_m" in results[0]:
         columns.append("kT_over_m")
-    with open(args.out + ".dat", "w") as out:
+    with open(path, "w") as out:
         out.write("# TCAF fits per wave number k = 2 pi j / L; errors are standard errors over "
                   f"{nblock} blocks\n# omega2 = 1 - 4 tau eta k^2/rho (< 0: oscillating branch)\n")
         out.write("# " + " ".join(columns) + "\n")
         for r in results:
             out.write(" ".join(f"{r[c]:.8g}" for c in columns) + "\n")
 
+
+def extrapolations(args, t, results, nblock):
+    """eta_0 of both models ({model: extrapolate(...)}) and the summary's lines."""
+    k = np.array([r["k"] for r in results])
     summary = [f"blocks: {nblock}, lags: {len(t)} (0 ... {t[-1]:g}), box {args.box}, rho {args.rho}",
                f"extrapolation eta_k = eta_0 + a k^2 on the {args.nfit} smallest k "
                f"({', '.join(f'{x:.4f}' for x in np.sort(k)[:args.nfit])}):"]
@@ -238,17 +227,17 @@ def write_outputs(args, t, mean, results, nblock):
         summary.append(f"  {name:9s}: eta_0 = {e0:.4f} +- {se0:.4f}, a = {a:.4f} +- {sa:.4f}")
     for label, value in args.reference:
         summary.append(f"  reference {label}: {value:g}")
-    with open(args.out + "_summary.txt", "w") as out:
-        out.write("\n".join(summary) + "\n")
-    print("\n".join(summary))
+    return fits, summary
 
-    # G'(w) and eta'(w) of the Maxwell fits for the smallest k
-    smallest = sorted(results, key=lambda r: r["k"])[:args.nfit]
+
+def write_moduli(path, smallest):
+    """G'(w) and eta'(w) of the Maxwell fits of the given k, over four decades about 1/tau;
+    returns the frequencies."""
     taus = [r["tau_maxwell"] for r in smallest if r["tau_maxwell"] > 0]
     lo = 1e-2 / max(taus) if taus else 1e-2
     hi = 1e2 / min(taus) if taus else 1e2
     omega = np.logspace(math.log10(lo), math.log10(hi), 200)
-    with open(args.out + "_moduli.dat", "w") as out:
+    with open(path, "w") as out:
         out.write("# omega " + " ".join(f"G'(k={r['k']:.4f}) eta'(k={r['k']:.4f})" for r in smallest)
                   + "\n")
         for w in omega:
@@ -257,9 +246,19 @@ def write_outputs(args, t, mean, results, nblock):
                 vals += [storage_modulus(w, r["eta_maxwell"], r["tau_maxwell"]),
                          dynamic_viscosity(w, r["eta_maxwell"], r["tau_maxwell"])]
             out.write(f"{w:.6g} " + " ".join(f"{v:.6g}" for v in vals) + "\n")
-    if args.no_plots:
-        return fits
-    plot(args, t, mean, results, smallest, omega, fits)
+    return omega
+
+
+def write_outputs(args, t, mean, results, nblock):
+    write_table(args.out + ".dat", results, nblock)
+    fits, summary = extrapolations(args, t, results, nblock)
+    with open(args.out + "_summary.txt", "w") as out:
+        out.write("\n".join(summary) + "\n")
+    print("\n".join(summary))
+    smallest = sorted(results, key=lambda r: r["k"])[:args.nfit]
+    omega = write_moduli(args.out + "_moduli.dat", smallest)
+    if not args.no_plots:
+        plot(args, t, mean, results, smallest, omega, fits)
     return fits
 
 
@@ -327,7 +326,7 @@ def parse_reference(text):
     return label, float(value)
 
 
-def main(argv=None):
+def parse_args(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("files", nargs="+", help="fix ave/correlate output files")
     parser.add_argument("--box", type=float, required=True, help="cubic box side L")
@@ -345,12 +344,23 @@ def main(argv=None):
     args = parser.parse_args(argv)
     if args.box <= 0 or args.rho <= 0 or args.dt <= 0 or args.nfit < 2:
         parser.error("--box, --rho and --dt must be > 0 and --nfit >= 2")
+    args.error = parser.error
+    return args
+
+
+def run(args):
+    """Read, fit and write everything; returns the extrapolations {model: (eta_0, a, errors)}."""
     lags, corr = load(args.files)
     if args.nfit > corr.shape[1]:
-        parser.error(f"--nfit {args.nfit} exceeds the {corr.shape[1]} wave numbers in the data")
+        args.error(f"--nfit {args.nfit} exceeds the {corr.shape[1]} wave numbers in the data")
     t, mean, results = analyse(lags, corr, args.box, args.rho, args.dt, args.threshold,
                                args.natoms)
     return write_outputs(args, t, mean, results, corr.shape[0])
+
+
+def main(argv=None):
+    run(parse_args(argv))
+    return 0
 
 
 if __name__ == "__main__":

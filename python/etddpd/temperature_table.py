@@ -2,7 +2,7 @@
 """Markdown tables of equilibrium kBT against time step (validation/temperature/run.sh output), one per mass,
 with the values of Mai-Duy, Phan-Thien and Tran-Cong (2013), Tables 2-4, side by side.
 Usage: temperature_table.py results.txt [time scale]"""
-import sys
+import argparse
 
 # the paper's ETD (its eq 31: order 1, piecewise noise) and velocity-Verlet columns (None: fails)
 PAPER = {
@@ -19,18 +19,32 @@ COLUMNS = ["etd", "etd noise exact", "etd order 2", "stock dpd/ext + nve", "etd 
 TIME = {0.1: 2.0, 0.01: 0.8, 0.001: 0.2}
 
 
-def main():
-    scale = float(sys.argv[2]) if len(sys.argv) > 2 else 1.0
+def parse_args(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\nUsage")[0])
+    parser.add_argument("results", help="results file of validation/temperature/run.sh: one "
+                                        "mass|dt|integrator|kBT|error line per run")
+    parser.add_argument("scale", nargs="?", type=float, default=1.0,
+                        help="the time scale factor run.sh was given (default 1)")
+    return parser.parse_args(argv)
+
+
+def read_results(path):
+    """{mass: {dt: {integrator: table cell}}} of run.sh's results file."""
     data = {}
-    for line in open(sys.argv[1]):
-        mass, dt, label, kt, err = line.strip().split("|")
-        if kt == "fails":
-            cell = "fails"
-        elif float(kt) > 1.5:    # finite, but the run has blown up
-            cell = f"unstable ({float(kt):.3g})"
-        else:
-            cell = f"{float(kt):.4f} +- {float(err):.4f}"
-        data.setdefault(float(mass), {}).setdefault(float(dt), {})[label] = cell
+    with open(path) as f:
+        for line in f:
+            mass, dt, label, kt, err = line.strip().split("|")
+            if kt == "fails":
+                cell = "fails"
+            elif float(kt) > 1.5:    # finite, but the run has blown up
+                cell = f"unstable ({float(kt):.3g})"
+            else:
+                cell = f"{float(kt):.4f} +- {float(err):.4f}"
+            data.setdefault(float(mass), {}).setdefault(float(dt), {})[label] = cell
+    return data
+
+
+def print_introduction():
     print("# Equilibrium kBT against time step: fix etd and the stock styles\n")
     print("Command: `bash validation/temperature/run.sh` (writes this page). Periodic box of 4,000 atoms, n = 4,")
     print("a = 18.75, gamma = 4.5 (sigma = 3), s = 1/2, kBT = 1 (`validation/temperature/in.temperature_scan`);")
@@ -40,17 +54,28 @@ def main():
     print("walls (peculiar velocities); its ETD is this package's `fix etd` (order 1, piecewise")
     print("noise). Stock: `pair_style dpd/ext` (ws = s/2) with `fix nve`, i.e. velocity-Verlet.")
     print("\"fails\": atoms lost or kBT not finite; \"unstable\": the run blew up (kBT above 1.5).\n")
+
+
+def print_mass_table(mass, by_dt, scale):
+    """The table of one mass: a row per time step, the paper's two columns first."""
+    print(f"## m = {mass} (production {TIME.get(mass, 0) * scale:g} time units per run)\n")
+    print("| dt | paper ETD | paper VV | " + " | ".join(COLUMNS) + " |")
+    print("|---|---|---|" + "---|" * len(COLUMNS))
+    for dt in sorted(by_dt):
+        paper = PAPER.get(mass, {}).get(dt)
+        pe = f"{paper[0]:.4f}" if paper else ""
+        pv = ("fails" if paper[1] is None else f"{paper[1]:.4f}") if paper else ""
+        cells = [by_dt[dt].get(c, "") for c in COLUMNS]
+        print(f"| {dt:g} | {pe} | {pv} | " + " | ".join(cells) + " |")
+    print()
+
+
+def main(argv=None):
+    args = parse_args(argv)
+    data = read_results(args.results)
+    print_introduction()
     for mass in sorted(data, reverse=True):
-        print(f"## m = {mass} (production {TIME.get(mass, 0) * scale:g} time units per run)\n")
-        print("| dt | paper ETD | paper VV | " + " | ".join(COLUMNS) + " |")
-        print("|---|---|---|" + "---|" * len(COLUMNS))
-        for dt in sorted(data[mass]):
-            paper = PAPER.get(mass, {}).get(dt)
-            pe = f"{paper[0]:.4f}" if paper else ""
-            pv = ("fails" if paper[1] is None else f"{paper[1]:.4f}") if paper else ""
-            cells = [data[mass][dt].get(c, "") for c in COLUMNS]
-            print(f"| {dt:g} | {pe} | {pv} | " + " | ".join(cells) + " |")
-        print()
+        print_mass_table(mass, data[mass], args.scale)
     print(SUMMARY)
 
 

@@ -10,23 +10,12 @@ import argparse
 
 import numpy as np
 
+from .lammps_output import read_ave_chunk
+
 
 def read_profile(path):
     """Last block of a fix ave/chunk file: columns chunk, coord, ncount, vx, density, temp."""
-    blocks, current = [], []
-    for line in open(path):
-        if line.startswith("#"):
-            continue
-        fields = line.split()
-        if len(fields) == 3:
-            if current:
-                blocks.append(current)
-            current = []
-        else:
-            current.append([float(x) for x in fields])
-    if current:
-        blocks.append(current)
-    return np.array(blocks[-1])
+    return read_ave_chunk(path).data[-1]
 
 
 def fit_viscosity(z, u, force, box, density):
@@ -45,13 +34,17 @@ def fit_viscosity(z, u, force, box, density):
     return eta, eta * amplitude_error / abs(amplitude)
 
 
-def main():
+def parse_args(argv=None):
     parser = argparse.ArgumentParser()
     parser.add_argument("profile")
     parser.add_argument("--force", type=float, required=True)
     parser.add_argument("--box", type=float, default=10.0)
     parser.add_argument("--density", type=float, default=4.0)
-    args = parser.parse_args()
+    return parser.parse_args(argv)
+
+
+def main(argv=None):
+    args = parse_args(argv)
     data = read_profile(args.profile)
     eta, error = fit_viscosity(data[:, 1], data[:, 3], args.force, args.box, args.density)
     print(f"eta = {eta:.4f} +- {error:.4f}  (kBT in bins {np.mean(data[:, 5]):.4f})")

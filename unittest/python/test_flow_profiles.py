@@ -2,7 +2,6 @@
 """Check python/flow_profiles.py on synthetic fix ave/chunk files with known answers: a Couette
 profile with slip, a Poiseuille parabola with slip, a given temperature and shear stress."""
 import json
-import math
 import os
 import subprocess
 import sys
@@ -49,11 +48,12 @@ def close(name, got, want, tol):
 
 def main():
     ok = True
-    # kinetic theory, s = 1/2, m = 0.01: the package's check value 0.17409 m + 2.2283
+    # kinetic theory, s = 1/2, m = 0.01: the package's check value 0.17409 m + 2.2283, and the
+    # estimate the script prints is that one
     sys.path.insert(0, PYTHON_DIR)
-    from etddpd import flow_profiles
-    ok &= close('eta kinetic theory', flow_profiles.kinetic_theory_viscosity(0.01, 1, 4.5, 4, 1, 0.5),
-                0.17409 * 0.01 + 2.2283, 1e-4)
+    from etddpd import kinetic_theory
+    eta_kt = kinetic_theory.viscosity(kinetic_theory.FluidState(4, 0.01, 1, 1), 4.5, 0.5)
+    ok &= close('eta kinetic theory', eta_kt, 0.17409 * 0.01 + 2.2283, 1e-4)
     with tempfile.TemporaryDirectory() as tmp:
         # Couette: walls at +-7.5, slip length 0.4 on both sides, eta = 2.0
         U, slip, eta = 7.5, 0.4, 2.0
@@ -65,6 +65,7 @@ def main():
         ok &= close('couette shear rate', r['shear_rate_fit'], rate, 1e-4)
         ok &= close('couette eta from stress', r['eta_from_stress'], eta, 1e-3)
         ok &= close('couette kT', r['kT_fluid'], KT, 1e-9)
+        ok &= close('couette eta kinetic theory', r['eta_kinetic_theory'], eta_kt, 1e-12)
         # Poiseuille: F = 0.1, eta = 1.95, zero of the parabola 0.3 beyond each wall
         F, eta, slip = 0.1, 1.95, 0.3
         B = N * F / (2 * eta)

@@ -48,8 +48,10 @@ def write_correlate(path, curves, nblock=1, noise=0.0, seed=1, truncate_last=Fal
 
 
 def run_tool(files, out, extra=()):
-    return tcaf_fit.main(list(files) + ["--box", str(BOX), "--rho", str(RHO), "--dt", str(DT),
-                                        "--out", out, "--nfit", "4"] + list(extra))
+    """The extrapolations of the tool run with these files and options."""
+    argv = list(files) + ["--box", str(BOX), "--rho", str(RHO), "--dt", str(DT), "--out", out,
+                          "--nfit", "4"] + list(extra)
+    return tcaf_fit.run(tcaf_fit.parse_args(argv))
 
 
 def read_table(prefix):
