@@ -15,7 +15,8 @@ if [ $# -lt 3 ]; then
 fi
 ranks=$1 rounds=$2
 shift 2
-lmp=${LMP:-$(bash "$here/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')/bin/lmp}
+. "$here/tools/lammps_env.sh"
+lmp=$LMP
 integrator=${INTEGRATOR:-etd scheme implicit tol 1e-4 start velocity}
 mass=${MASS:-0.001} dt=${DT:-0.001}
 mpi=(mpirun -np "$ranks")

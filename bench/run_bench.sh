@@ -4,15 +4,15 @@
 #        BENCH_RANKS="1" bash bench/run_bench.sh 300     (only these rank counts)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-prefix=$(bash "$here/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')
+. "$here/tools/lammps_env.sh"
 steps=${1:-500}
 out="$here/bench/results"
 mkdir -p "$out"
 mpi_flags=()
 [ "$(id -u)" = 0 ] && mpi_flags+=(--allow-run-as-root)
 for ranks in ${BENCH_RANKS:-1 2}; do
-  mpirun "${mpi_flags[@]}" -np $ranks "$prefix/bin/lmp" -in "$here/bench/in.pair_throughput" \
-    -var plugin "$here/build/etddpdplugin.so" -var steps "$steps" -log "$out/log.np$ranks" -screen none
+  mpirun "${mpi_flags[@]}" -np $ranks "$LMP" -in "$here/bench/in.pair_throughput" \
+    -var plugin "$PLUGIN" -var steps "$steps" -log "$out/log.np$ranks" -screen none
 done
 logs=(); for ranks in ${BENCH_RANKS:-1 2}; do logs+=("$out/log.np$ranks"); done
 /usr/bin/python3 "$here/bench/throughput_table.py" "${logs[@]}"

@@ -3,12 +3,12 @@
 # by side, 1 rank). Usage: bash bench/run_scaling.sh [steps]   (writes bench/results/scaling/)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-prefix=$(bash "$here/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')
+. "$here/tools/lammps_env.sh"
 steps=${1:-100}
 out="$here/bench/results/scaling"
 mkdir -p "$out"
 for side in 10 20 30 40; do    # 3,000, 24,000, 81,000, 192,000 atoms
-  "$prefix/bin/lmp" -in "$here/bench/in.scaling" -var plugin "$here/build/etddpdplugin.so" -var side $side \
+  "$LMP" -in "$here/bench/in.scaling" -var plugin "$PLUGIN" -var side $side \
     -var steps "$steps" -log "$out/log.side$side" -screen none
 done
 /usr/bin/python3 - "$out" <<'PY'

@@ -7,13 +7,13 @@
 # Usage: bash validation/diffusion/run.sh [MSD time units, default 4]
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-prefix=$(bash "$here/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')
+. "$here/tools/lammps_env.sh"
 time_units=${1:-4}
 out="$here/out/validation_diffusion"; mkdir -p "$out"
 rows=()
 run() {    # mass dt integrator VACF-window VACF-origins [measured eta]
   local dir="$out/m$1_${3%% *}_$2"; mkdir -p "$dir"
-  (cd "$dir" && "$prefix/bin/lmp" -in "$here/validation/diffusion/in.diffusion" -var plugin "${ETDDPD_PLUGIN:-$here/build/etddpdplugin.so}" \
+  (cd "$dir" && "$LMP" -in "$here/validation/diffusion/in.diffusion" -var plugin "$PLUGIN" \
     -var mass "$1" -var dt "$2" -var integrator "$3" -var time "$time_units" \
     -var vacf_time "$4" -var origins "$5" -log log.lammps -screen none)
   grep RESULT "$dir/log.lammps" | tail -1

@@ -20,15 +20,13 @@
 # see validation/fpm/README.md.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-lmp=${1:-}
-if [[ -z "$lmp" ]]; then
-  prefix=$(bash "$here/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')
-  lmp="$prefix/bin/lmp"
-fi
+LMP=${1:-${LMP:-}}
+. "$here/tools/lammps_env.sh"
+lmp=$LMP
 scale=${FPM_STEPS_SCALE:-1}
 out="$here/out/fpm"; mkdir -p "$out"; cd "$out"
 # a private copy: rebuilding the plugin while these runs go on does not touch them
-cp "$here/build/etddpdplugin.so" "$out/etddpdplugin.so"
+cp "$PLUGIN" "$out/etddpdplugin.so"
 common=(-var plugin "$out/etddpdplugin.so" -var potentials "$here/potentials" -screen none)
 run() {    # name steps
   local name=$1 steps=$(( $2 * scale ))

@@ -6,7 +6,7 @@
 # validation/implicit/README.md. Usage: bash validation/implicit/run.sh [production time units]
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-prefix=$(bash "$here/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')
+. "$here/tools/lammps_env.sh"
 time_units=${1:-4}
 out="$here/out/validation_implicit"; mkdir -p "$out"; cd "$out"
 table="$out/table.md"
@@ -14,7 +14,7 @@ echo "| m | integrator | dt | kBT | eta (reverse Poiseuille, g = 0.3) | D (MSD i
 echo "|---|---|---|---|---|---|" >>"$table"
 run() {    # mass integrator dt time
   local name="p_${1}_${2// /_}_${3}.txt"
-  if "$prefix/bin/lmp" -in "$here/validation/implicit/in.reverse_poiseuille" -var plugin "$here/build/etddpdplugin.so" \
+  if "$LMP" -in "$here/validation/implicit/in.reverse_poiseuille" -var plugin "$PLUGIN" \
       -var mass "$1" -var integrator "$2" -var dt "$3" -var time "$4" -var out "$name" \
       -log none -screen screen.txt >/dev/null 2>&1; then
     local kT eta diffusivity

@@ -9,7 +9,7 @@
 # Usage: bash validation/overdamped/run.sh [production time units, default 10] (about 25 min)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-prefix=$(bash "$here/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')
+. "$here/tools/lammps_env.sh"
 time_units=${1:-10}
 out="$here/out/validation_overdamped"; mkdir -p "$out"; cd "$out"
 table="$out/table.md"
@@ -18,7 +18,7 @@ echo "|---|---|---|---|---|---|---|---|---|" >>"$table"
 run() {    # label mass integrator dt [extra lmp args]
   local label=$1 mass=$2 integrator=$3 dt=$4; shift 4
   local name="p_${mass}_${dt}_${label// /_}"
-  if "$prefix/bin/lmp" -in "$here/validation/implicit/in.reverse_poiseuille" -var plugin "$here/build/etddpdplugin.so" \
+  if "$LMP" -in "$here/validation/implicit/in.reverse_poiseuille" -var plugin "$PLUGIN" \
       -var mass "$mass" -var integrator "$integrator" -var dt "$dt" -var time "$time_units" \
       -var out "$name.txt" -var iterations yes "$@" -log "$name.log" -screen none >/dev/null 2>&1; then
     local kT D eta iters kept seconds steps

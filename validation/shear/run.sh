@@ -15,11 +15,8 @@
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 top=$(cd "$here/../.." && pwd)
-if [ -z "${LMP:-}" ]; then
-  prefix=$(bash "$top/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')
-  LMP=$prefix/bin/lmp
-fi
-plugin=${PLUGIN:-$top/build/etddpdplugin.so}
+. "$top/tools/lammps_env.sh"
+plugin=$PLUGIN
 rates=${RATES:-0.5 1 2}
 seeds=${SEEDS:-1001 1002 1003 1004}
 cases=${CASES:-stock:0.0005 nve:0.0005 diag:0.0005 implicit:0.003 implicit:0.001}

@@ -7,11 +7,8 @@
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 top=$(cd "$here/../.." && pwd)
-if [ -z "${LMP:-}" ]; then
-  prefix=$(bash "$top/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')
-  LMP=$prefix/bin/lmp
-fi
-plugin=${PLUGIN:-$top/build/etddpdplugin.so}
+. "$top/tools/lammps_env.sh"
+plugin=$PLUGIN
 time=${1:-30} integ=${2:-nve} dt=${3:-0.0005}
 cd "$here"
 mkdir -p results/tcaf logs

@@ -7,13 +7,13 @@
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 top=$(cd "$here/../.." && pwd)
-prefix=$(bash "$top/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')
+. "$top/tools/lammps_env.sh"
 last=${1:-11}; first=${2:-0}
 ranks=${ETD_DPD_RANKS:-1}
 mpi=(mpirun -np "$ranks"); [ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root --oversubscribe)
 cd "$here"
 for ((c = first; c <= last; c++)); do
-  "${mpi[@]}" "$prefix/bin/lmp" -in "$top/examples/tcaf/in.tcaf" -var plugin "$top/build/etddpdplugin.so" -var chunk "$c" \
+  "${mpi[@]}" "$LMP" -in "$top/examples/tcaf/in.tcaf" -var plugin "$PLUGIN" -var chunk "$c" \
     -log "log.chunk.$c" -screen none
   echo "chunk $c done: tcaf.$c.dat"
 done

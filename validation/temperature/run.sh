@@ -10,7 +10,7 @@
 # validation/temperature/README.md. Usage: bash validation/temperature/run.sh [time scale factor, default 1]
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-prefix=$(bash "$here/tools/bootstrap.sh" 2>/dev/null | sed -n 's/^LAMMPS_PREFIX=//p')
+. "$here/tools/lammps_env.sh"
 scale=${1:-1}
 out="$here/out/validation"; mkdir -p "$out"; cd "$out"
 results="$out/results.txt"; : >"$results"
@@ -18,7 +18,7 @@ run() {    # label pair integrator mass dt time
   local label=$1 pair=$2 integrator=$3 mass=$4 dt=$5 time
   time=$(awk "BEGIN { print $6 * $scale }")
   rm -f kbt_blocks.txt
-  if "$prefix/bin/lmp" -in "$here/validation/temperature/in.temperature_scan" -var plugin "$here/build/etddpdplugin.so" \
+  if "$LMP" -in "$here/validation/temperature/in.temperature_scan" -var plugin "$PLUGIN" \
       -var pair "$pair" -var integrator "$integrator" -var dt "$dt" -var mass "$mass" \
       -var time "$time" -var equil "$(awk "BEGIN { print $time / 4 }")" -log none -screen screen.txt \
       >/dev/null 2>&1 && grep -q "kBT=[0-9]" screen.txt; then
