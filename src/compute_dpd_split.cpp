@@ -8,7 +8,7 @@
 #include "atom.h"
 #include "dpd_style_lookup.h"
 #include "error.h"
-#include "fix_etd_implicit.h"
+#include "fix.h"
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
@@ -20,7 +20,7 @@ using namespace LAMMPS_NS;
 static constexpr int NVALUES = 9;
 
 ComputeDPDSplit::ComputeDPDSplit(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), provider(nullptr), implicit(nullptr), nmax(0), per_atom(nullptr)
+    Compute(lmp, narg, arg), dpd_style(nullptr), implicit(nullptr), implicit_id(nullptr), nmax(0), per_atom(nullptr)
 {
   if (narg != 3)
     error->all(FLERR, "Illegal compute dpd/split command: expected 'compute ID group dpd/split', "
@@ -43,21 +43,22 @@ ComputeDPDSplit::~ComputeDPDSplit()
 
 void ComputeDPDSplit::init()
 {
-  auto providers = etd::find_dpd_providers(lmp);
-  if (providers.empty())
+  auto dpd_styles = etd::find_dpd_pair_styles(lmp);
+  if (dpd_styles.empty())
     error->all(FLERR, "Compute dpd/split requires pair style dpd/gen or dpd/fpm (alone or in hybrid)");
-  if (providers.size() > 1)
+  if (dpd_styles.size() > 1)
     error->all(FLERR, "Compute dpd/split supports one dpd/gen or dpd/fpm sub-style, found {}",
-               providers.size());
-  provider = providers.front();
-  provider->request_force_split();
+               dpd_styles.size());
+  dpd_style = dpd_styles.front();
+  dpd_style->request_force_split();
   implicit = nullptr;
   for (int i = 0; i < modify->nfix; i++)
-    if (auto *fix = dynamic_cast<FixETDImplicit *>(modify->fix[i])) {
+    if (auto *integrator = dynamic_cast<etd::DpdFrictionIntegrator *>(modify->fix[i])) {
       if (implicit)
         error->all(FLERR, "Compute dpd/split supports one fix etd scheme implicit, found {} and {}",
-                   implicit->id, fix->id);
-      implicit = fix;
+                   implicit_id, modify->fix[i]->id);
+      implicit = integrator;
+      implicit_id = modify->fix[i]->id;
     }
   if (implicit) implicit->request_split();
 }
@@ -70,7 +71,7 @@ void ComputeDPDSplit::copy_split()
     memory->create(per_atom, nmax, NVALUES, "dpd/split:per_atom");
     array_atom = per_atom;
   }
-  double **split = provider->force_split();
+  double **split = dpd_style->force_split();
   const int nlocal = atom->nlocal;
   const int *mask = atom->mask;
   for (int i = 0; i < nlocal; i++)

@@ -4,7 +4,10 @@
 
 #include "compute.h"
 
-namespace etd { class DpdExtrasProvider; }
+namespace etd {
+class DpdPairInterface;
+class DpdFrictionIntegrator;
+}    // namespace etd
 
 namespace LAMMPS_NS {
 
@@ -18,8 +21,9 @@ class ComputeDPDSplit : public Compute {
   double memory_usage() override;
 
  private:
-  etd::DpdExtrasProvider *provider;
-  class FixETDImplicit *implicit;    // fix etd scheme implicit: it supplies the D and R parts
+  etd::DpdPairInterface *dpd_style;
+  etd::DpdFrictionIntegrator *implicit;    // fix etd scheme implicit: it supplies D and R
+  const char *implicit_id;
   int nmax;
   double **per_atom;
   void copy_split();

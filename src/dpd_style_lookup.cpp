@@ -1,27 +1,52 @@
 #include "dpd_style_lookup.h"
 
+#include "error.h"
 #include "force.h"
 #include "pair.h"
+#include "pair_hybrid.h"
+#include "update.h"
+#include "utils.h"
 
-#include <algorithm>
+namespace {
 
-std::vector<etd::DpdExtrasProvider *> etd::find_dpd_providers(LAMMPS_NS::LAMMPS *lmp)
+// PairHybrid keeps its sub-styles protected (29Sep2021 and 4Jul2026 alike; LAMMPS's own users
+// of them are friends). A derived class may form a pointer to such a member, and the pointer
+// may be applied to any PairHybrid ([class.protected]): this reads the list through the
+// class's own declarations, without a copy of its layout. Never instantiated.
+class HybridSubStyles : public LAMMPS_NS::PairHybrid {
+ public:
+  static std::vector<LAMMPS_NS::Pair *> of(LAMMPS_NS::PairHybrid *hybrid)
+  {
+    const int n = hybrid->*(&HybridSubStyles::nstyles);
+    LAMMPS_NS::Pair **styles = hybrid->*(&HybridSubStyles::styles);
+    return std::vector<LAMMPS_NS::Pair *>(styles, styles + n);
+  }
+};
+
+}    // namespace
+
+std::vector<etd::DpdPairInterface *> etd::find_dpd_pair_styles(LAMMPS_NS::LAMMPS *lmp)
 {
-  std::vector<DpdExtrasProvider *> found;
+  std::vector<DpdPairInterface *> found;
   LAMMPS_NS::Pair *pair = lmp->force->pair;
   if (!pair) return found;
-  if (auto *provider = dynamic_cast<DpdExtrasProvider *>(pair)) {
-    found.push_back(provider);
-    return found;
-  }
-  // sub-styles of pair hybrid: pair_match returns the n-th instance of a style, and falls back
-  // to the only instance when there is one, so stop at the first repeat
-  for (const char *name : {"dpd/gen", "dpd/fpm"}) {
-    for (int nsub = 1;; nsub++) {
-      auto *provider = dynamic_cast<DpdExtrasProvider *>(lmp->force->pair_match(name, 1, nsub));
-      if (!provider || std::find(found.begin(), found.end(), provider) != found.end()) break;
-      found.push_back(provider);
-    }
+  if (auto *style = dynamic_cast<DpdPairInterface *>(pair)) {
+    found.push_back(style);
+  } else if (auto *hybrid = dynamic_cast<LAMMPS_NS::PairHybrid *>(pair)) {
+    for (LAMMPS_NS::Pair *sub : HybridSubStyles::of(hybrid))
+      if (auto *style = dynamic_cast<DpdPairInterface *>(sub)) found.push_back(style);
   }
   return found;
+}
+
+std::vector<etd::DpdPairInterface *> etd::fix_etd_pair_styles(LAMMPS_NS::LAMMPS *lmp,
+                                                            const char *friction)
+{
+  if (LAMMPS_NS::utils::strmatch(lmp->update->integrate_style, "^respa"))
+    lmp->error->all(FLERR, "Fix etd does not support run_style respa");
+  std::vector<DpdPairInterface *> styles = find_dpd_pair_styles(lmp);
+  if (styles.empty())
+    lmp->error->all(FLERR, "Fix etd requires pair style dpd/gen or dpd/fpm (alone or in pair "
+                    "hybrid/overlay) to supply the {}", friction);
+  return styles;
 }

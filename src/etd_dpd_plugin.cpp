@@ -2,7 +2,7 @@
 #include "compute_dpd_split.h"
 #include "compute_dpd_tcurrent.h"
 #include "dpd_design.h"
-#include "fix_etd.h"
+#include "fix_etd_diagonal.h"
 #include "fix_etd_implicit.h"
 #include "error.h"
 #include "fix_wall_cylinder_bounce.h"
@@ -33,7 +33,7 @@ Fix *create_fix_etd(LAMMPS *lmp, int narg, char **arg)
       if (scheme != "diagonal")
         lmp->error->all(FLERR, "Illegal fix etd command: scheme must be diagonal or implicit, got {}", scheme);
     }
-  return new FixETD(lmp, narg, arg);
+  return new FixETDDiagonal(lmp, narg, arg);
 }
 Compute *create_compute_dpd_tcurrent(LAMMPS *lmp, int narg, char **arg)
 {

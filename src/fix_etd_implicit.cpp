@@ -124,8 +124,7 @@ int FixETDImplicit::setmask()
 void FixETDImplicit::init()
 {
   dt = update->dt;
-  if (utils::strmatch(update->integrate_style, "^respa"))
-    error->all(FLERR, "Fix etd does not support run_style respa");
+  dpd_styles = etd::fix_etd_pair_styles(lmp, "friction");
   if (atom->tag_enable == 0)
     error->all(FLERR, "Fix etd scheme implicit requires atom IDs (its noise is keyed on them)");
   // Atoms outside the group enter the solve with their velocities held: walls, obstacles and
@@ -141,16 +140,12 @@ void FixETDImplicit::init()
                "Integrate every DPD atom with fix etd scheme implicit, or use fix etd scheme "
                "diagonal, whose pair forces stay complete", other->id, other->style);
   }
-  providers = etd::find_dpd_providers(lmp);
-  if (providers.empty())
-    error->all(FLERR, "Fix etd requires pair style dpd/gen or dpd/fpm (alone or in pair "
-               "hybrid/overlay) to supply the friction");
 
   const int ntypes = atom->ntypes;
   pair_table.assign((ntypes + 1) * (ntypes + 1), nullptr);
   fpm_table.assign((ntypes + 1) * (ntypes + 1), nullptr);
   bool rotation = false;
-  for (auto *p : providers) {
+  for (auto *p : dpd_styles) {
     bool supplies = false;
     for (int i = 1; i <= ntypes; i++)
       for (int j = 1; j <= ntypes; j++) {
@@ -191,7 +186,7 @@ void FixETDImplicit::init()
       error->all(FLERR, "Fix etd scheme implicit: atom {} has zero moment of inertia; give it a "
                  "diameter (set ... diameter) and a mass", bad);
   }
-  noise = etd::PairNoise(providers.front()->noise_seed(), etd::NoiseStream::Integrator);
+  noise = etd::PairNoise(dpd_styles.front()->noise_seed(), etd::NoiseStream::Integrator);
   // On several ranks the list is newton off, so that a pair crossing ranks is held by both
   // (partner_exchange.h); on one rank there is no such pair, and the default list is a free
   // copy of the pair style's where the newton settings agree.
@@ -468,18 +463,17 @@ void FixETDImplicit::build_pairs()
       if (rsq >= c->rcsq_d || rsq == 0.0) continue;
       const double r = std::sqrt(rsq);
       const double inv_r = 1.0 / r;
-      const double q = 1.0 - r * c->inv_rc_d;
-      const double w_r = etd::power_of(q, c->random_kind, 0.5 * c->s);
+      const etd::PairDissipation dissipation = etd::pair_dissipation(*c, r, factor);
       // written in place (a pair assembled on the stack and copied stalled on the copy)
       pairs.emplace_back();
       etd::FrictionPair &p = pairs.back();
       p.i = i;
       p.j = partner;
       for (int k = 0; k < 3; k++) p.e[k] = static_cast<float>(d[k] * inv_r);
-      p.friction = static_cast<float>(factor * c->gamma * w_r * w_r);
+      p.friction = static_cast<float>(dissipation.friction);
       // the amplitude now, the Gaussian in a second pass: without the generator in it this
       // loop is short enough for the processor to overlap the square roots of successive pairs
-      pair_noise.push_back((factor == 1.0 ? 1.0 : std::sqrt(factor)) * c->sigma * w_r);
+      pair_noise.push_back(dissipation.noise);
       pair_tags.push_back({tag[i], tag[j]});
       if (!i_mobile || !j_mobile) fixed_partner = 1;
       pair_distance.push_back(r);
@@ -509,26 +503,23 @@ bool FixETDImplicit::add_fpm_pair(const etd::FpmCoefficients &c, int i, int j, c
 {
   if (rsq >= c.rcsq || rsq == 0.0 || (c.gamma_c == 0.0 && c.gamma_s == 0.0)) return false;
   const double r = std::sqrt(rsq);
-  const double q = 1.0 - r * c.inv_rc;
-  const double w_r = etd::power_of(q, c.random_kind, 0.5 * c.s);
-  const double w = w_r * w_r;
+  const etd::FpmDissipation dissipation = etd::fpm_dissipation(c, r, factor);
   const double e[3] = {d[0] / r, d[1] / r, d[2] / r};
   etd::FpmFrictionPair p;
   p.i = i;
   p.j = j;
   for (int k = 0; k < 3; k++) p.e[k] = static_cast<float>(e[k]);
   p.half_r = static_cast<float>(0.5 * r);
-  p.central = static_cast<float>(factor * c.gamma_c * w);
-  p.shear = static_cast<float>(factor * c.gamma_s * w);
+  p.central = static_cast<float>(dissipation.central);
+  p.shear = static_cast<float>(dissipation.shear);
   fpm_pairs.push_back(p);
   double theta[4];
   noise.gaussians4(tag_i, tag_j, step, 0, theta);
-  const double amplitude = std::sqrt(factor) * w_r;
-  const double axial[3] = {theta[1], theta[2], theta[3]};
-  const double sheared[3] = {axial[1] * e[2] - axial[2] * e[1], axial[2] * e[0] - axial[0] * e[2],
-                             axial[0] * e[1] - axial[1] * e[0]};
-  for (int k = 0; k < 3; k++)
-    fpm_noise.push_back(amplitude * (c.sigma_c * theta[0] * e[k] + c.sigma_s * sheared[k]));
+  etd::FpmNoise pair_noise;
+  pair_noise.central = theta[0];
+  for (int k = 0; k < 3; k++) pair_noise.shear[k] = theta[k + 1];
+  const etd::FpmRandomForce random = etd::fpm_random_force(c, e, dissipation.noise, pair_noise);
+  for (int k = 0; k < 3; k++) fpm_noise.push_back(random.central * e[k] + random.shear[k]);
   return true;
 }
 

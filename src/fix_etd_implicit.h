@@ -5,6 +5,7 @@
 
 #include "fix.h"
 
+#include "dpd_pair_interface.h"
 #include "dpd_random.h"
 #include "friction_operator.h"
 #include "friction_solve.h"
@@ -16,15 +17,9 @@
 #include <utility>
 #include <vector>
 
-namespace etd {
-class DpdExtrasProvider;
-struct PairCoefficients;
-struct FpmCoefficients;
-}    // namespace etd
-
 namespace LAMMPS_NS {
 
-class FixETDImplicit : public Fix {
+class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
  public:
   FixETDImplicit(class LAMMPS *, int, char **);
   ~FixETDImplicit() override;
@@ -55,8 +50,8 @@ class FixETDImplicit : public Fix {
   // Inertial: D = -G (v + v')/2 (atoms outside the group at their own v), R = B xi / sqrt(h), so
   // that for an atom of the group h (D + R) = M (v' - v) of the friction step. Overdamped:
   // D = -G v, R = B xi / sqrt(h) (D + R = -F on the group's atoms).
-  void request_split() { split_requested = true; }
-  double **dissipative_random_split() const { return split; }
+  void request_split() override { split_requested = true; }
+  double **dissipative_random_split() const override { return split; }
 
  private:
   bool overdamped;
@@ -67,7 +62,7 @@ class FixETDImplicit : public Fix {
   double dt;
   class NeighList *list;
   bool list_newton_off;    // each image pair is listed from both ends
-  std::vector<etd::DpdExtrasProvider *> providers;
+  std::vector<etd::DpdPairInterface *> dpd_styles;
   std::vector<const etd::PairCoefficients *> pair_table;    // (ntypes+1)^2, nullptr: no DPD
   std::vector<const etd::FpmCoefficients *> fpm_table;      // the same for dpd/fpm pairs
   double friction_cutsq_max = 0.0;    // the largest squared friction cutoff of any type pair

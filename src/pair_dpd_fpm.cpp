@@ -5,101 +5,52 @@
 #include "comm.h"
 #include "error.h"
 #include "force.h"
-#include "lammps_compat.h"
 #include "memory.h"
 #include "neigh_list.h"
 #include "update.h"
 #include "utils.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
 
 namespace {
-constexpr double EPSILON = 1.0e-10;    // coincident atoms (possible in DPD) get no force
-constexpr int FRICTION_VALUES = 3;
-constexpr int SPLIT_VALUES = 9;
 constexpr int NCOEFF = 5;    // a, gamma_C, gamma_S, s, cutoff
 }    // namespace
 
 PairDPDFPM::PairDPDFPM(LAMMPS *lmp) :
-    Pair(lmp), temperature(0.0), cut_global(0.0), seed(0), a0(nullptr), gamma_c(nullptr),
-    gamma_s(nullptr), exponent_d(nullptr), cut(nullptr), stride(0), want_friction(false),
-    want_split(false), conservative_only(false), friction(nullptr), rot_friction(nullptr),
-    split(nullptr), nmax_extras(0)
+    PairDPDBase(lmp, "dpd/fpm", true), a0(nullptr), gamma_c(nullptr), gamma_s(nullptr),
+    exponent_d(nullptr), stride(0)
 {
-  writedata = 1;
-  restartinfo = 1;
-  comm_reverse = 2 * FRICTION_VALUES + SPLIT_VALUES;
 }
 
 PairDPDFPM::~PairDPDFPM()
 {
   if (copymode) return;
   if (allocated) {
-    memory->destroy(setflag);
-    memory->destroy(cutsq);
     memory->destroy(a0);
     memory->destroy(gamma_c);
     memory->destroy(gamma_s);
     memory->destroy(exponent_d);
-    memory->destroy(cut);
   }
-  memory->destroy(friction);
-  memory->destroy(rot_friction);
-  memory->destroy(split);
 }
 
 void PairDPDFPM::allocate()
 {
-  allocated = 1;
+  allocate_base();
   const int n = atom->ntypes;
-  memory->create(setflag, n + 1, n + 1, "pair:setflag");
-  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   memory->create(a0, n + 1, n + 1, "pair:a0");
   memory->create(gamma_c, n + 1, n + 1, "pair:gamma_c");
   memory->create(gamma_s, n + 1, n + 1, "pair:gamma_s");
   memory->create(exponent_d, n + 1, n + 1, "pair:exponent_d");
-  memory->create(cut, n + 1, n + 1, "pair:cut");
   for (int i = 0; i <= n; i++)
     for (int j = 0; j <= n; j++) {
-      setflag[i][j] = 0;
       a0[i][j] = gamma_c[i][j] = gamma_s[i][j] = 0.0;
       exponent_d[i][j] = 2.0;
-      cut[i][j] = 0.0;
     }
   stride = n + 1;
   coeffs.assign(static_cast<size_t>(stride) * stride, etd::FpmCoefficients());
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairDPDFPM::settings(int narg, char **arg)
-{
-  if (narg != 3)
-    error->all(FLERR, "Illegal pair_style dpd/fpm command: expected 3 arguments (T cutoff seed), got {}",
-               narg);
-  temperature = utils::numeric(FLERR, arg[0], false, lmp);
-  cut_global = utils::numeric(FLERR, arg[1], false, lmp);
-  seed = utils::inumeric(FLERR, arg[2], false, lmp);
-  if (temperature < 0.0)
-    error->all(FLERR, "Illegal pair_style dpd/fpm command: temperature must be >= 0, got {}", arg[0]);
-  if (cut_global <= 0.0)
-    error->all(FLERR, "Illegal pair_style dpd/fpm command: cutoff must be > 0, got {}", arg[1]);
-  if (seed <= 0)
-    error->all(FLERR, "Illegal pair_style dpd/fpm command: seed must be a positive integer, got {}",
-               arg[2]);
-  // the scalar stream: the central noise is then the same number dpd/gen draws for the pair
-  noise = etd::PairNoise(static_cast<std::uint64_t>(seed), etd::NoiseStream::PairScalar);
-
-  // as in stock pair styles: a new global cutoff resets the cutoffs already set
-  if (allocated) {
-    for (int i = 1; i <= atom->ntypes; i++)
-      for (int j = i; j <= atom->ntypes; j++)
-        if (setflag[i][j]) cut[i][j] = cut_global;
-  }
 }
 
 /* ----------------------------------------------------------------------
@@ -155,20 +106,12 @@ void PairDPDFPM::init_style()
   if (!atom->omega_flag || !atom->torque_flag)
     error->all(FLERR, "Pair style dpd/fpm requires atoms with angular velocity and torque "
                "(atom_style sphere, or hybrid with sphere)");
-  if (comm->ghost_velocity == 0)
-    error->all(FLERR, "Pair style dpd/fpm requires ghost atoms store velocity: use 'comm_modify vel yes'");
-  if (atom->tag_enable == 0)
-    error->all(FLERR, "Pair style dpd/fpm requires atom IDs (its noise is keyed on them)");
-  if (update->dt <= 0.0) error->all(FLERR, "Pair style dpd/fpm requires a positive timestep");
-  etd::compat::request_half_list(neighbor, this, instance_me);
-  conservative_only = false;    // fix etd scheme implicit asks again in its init, after this one
+  PairDPDBase::init_style();
 }
 
 const etd::FpmCoefficients *PairDPDFPM::fpm_coefficients(int i, int j)
 {
-  if (i < 1 || j < 1 || i > atom->ntypes || j > atom->ntypes) return nullptr;
-  if (!setflag[std::min(i, j)][std::max(i, j)]) return nullptr;
-  return &coeffs[i * stride + j];
+  return type_pair_set(i, j) ? &coeffs[i * stride + j] : nullptr;
 }
 
 double PairDPDFPM::init_one(int i, int j)
@@ -193,32 +136,10 @@ double PairDPDFPM::init_one(int i, int j)
 
 /* ---------------------------------------------------------------------- */
 
-void PairDPDFPM::grow_extras()
-{
-  if (atom->nmax <= nmax_extras) return;
-  nmax_extras = atom->nmax;
-  if (want_friction) {
-    memory->grow(friction, nmax_extras, FRICTION_VALUES, "pair:friction");
-    memory->grow(rot_friction, nmax_extras, FRICTION_VALUES, "pair:rot_friction");
-  }
-  if (want_split) memory->grow(split, nmax_extras, SPLIT_VALUES, "pair:split");
-}
-
 void PairDPDFPM::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  const bool extras = want_friction || want_split;
-  if (extras) {
-    if (!friction && want_friction) nmax_extras = 0;
-    if (!split && want_split) nmax_extras = 0;
-    grow_extras();
-    const int nzero = force->newton_pair ? atom->nlocal + atom->nghost : atom->nlocal;
-    if (want_friction && nzero > 0) {
-      std::memset(&friction[0][0], 0, sizeof(double) * FRICTION_VALUES * nzero);
-      std::memset(&rot_friction[0][0], 0, sizeof(double) * FRICTION_VALUES * nzero);
-    }
-    if (want_split && nzero > 0) std::memset(&split[0][0], 0, sizeof(double) * SPLIT_VALUES * nzero);
-  }
+  const bool extras = prepare_extras();
 
   if (conservative_only) {
     if (evflag) eval<1, 0, 0>(); else eval<0, 0, 0>();
@@ -228,7 +149,7 @@ void PairDPDFPM::compute(int eflag, int vflag)
     if (extras) eval<0, 1, 1>(); else eval<0, 0, 1>();
   }
 
-  if (extras && force->newton_pair) etd::compat::reverse_comm(comm, this);
+  finish_extras(extras);
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
@@ -278,7 +199,7 @@ template <int EVFLAG, int EXTRAS, int DISSIPATIVE> void PairDPDFPM::eval()
       const int jtype = type[j];
       if (rsq >= cutsqi[jtype]) continue;
       const double r = std::sqrt(rsq);
-      if (r < EPSILON) continue;
+      if (r < MIN_DISTANCE) continue;
       const etd::FpmCoefficients &c = crow[jtype];
       if (!DISSIPATIVE) {
         const double fpair = factor * c.a * (1.0 - r * c.inv_rc) / r;
@@ -357,98 +278,27 @@ template <int EVFLAG, int EXTRAS, int DISSIPATIVE> void PairDPDFPM::eval()
   }
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   restart file: per set type pair its five values
+------------------------------------------------------------------------- */
 
-int PairDPDFPM::pack_reverse_comm(int n, int first, double *buf)
+void PairDPDFPM::write_type_pair(FILE *fp, int i, int j)
 {
-  int m = 0;
-  const int last = first + n;
-  for (int i = first; i < last; i++) {
-    if (want_friction)
-      for (int k = 0; k < FRICTION_VALUES; k++) {
-        buf[m++] = friction[i][k];
-        buf[m++] = rot_friction[i][k];
-      }
-    if (want_split)
-      for (int k = 0; k < SPLIT_VALUES; k++) buf[m++] = split[i][k];
-  }
-  return m;
+  const double values[NCOEFF] = {a0[i][j], gamma_c[i][j], gamma_s[i][j], exponent_d[i][j],
+                                 cut[i][j]};
+  fwrite(values, sizeof(double), NCOEFF, fp);
 }
 
-void PairDPDFPM::unpack_reverse_comm(int n, int *list, double *buf)
+void PairDPDFPM::read_type_pair(FILE *fp, int i, int j)
 {
-  int m = 0;
-  for (int i = 0; i < n; i++) {
-    const int j = list[i];
-    if (want_friction)
-      for (int k = 0; k < FRICTION_VALUES; k++) {
-        friction[j][k] += buf[m++];
-        rot_friction[j][k] += buf[m++];
-      }
-    if (want_split)
-      for (int k = 0; k < SPLIT_VALUES; k++) split[j][k] += buf[m++];
-  }
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairDPDFPM::write_restart_settings(FILE *fp)
-{
-  fwrite(&temperature, sizeof(double), 1, fp);
-  fwrite(&cut_global, sizeof(double), 1, fp);
-  fwrite(&seed, sizeof(int), 1, fp);
-  fwrite(&mix_flag, sizeof(int), 1, fp);
-}
-
-void PairDPDFPM::read_restart_settings(FILE *fp)
-{
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &temperature, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &seed, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &mix_flag, sizeof(int), 1, fp, nullptr, error);
-  }
-  MPI_Bcast(&temperature, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&seed, 1, MPI_INT, 0, world);
-  MPI_Bcast(&mix_flag, 1, MPI_INT, 0, world);
-  noise = etd::PairNoise(static_cast<std::uint64_t>(seed), etd::NoiseStream::PairScalar);
-}
-
-void PairDPDFPM::write_restart(FILE *fp)
-{
-  write_restart_settings(fp);
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      fwrite(&setflag[i][j], sizeof(int), 1, fp);
-      if (setflag[i][j]) {
-        const double values[NCOEFF] = {a0[i][j], gamma_c[i][j], gamma_s[i][j], exponent_d[i][j],
-                                       cut[i][j]};
-        fwrite(values, sizeof(double), NCOEFF, fp);
-      }
-    }
-}
-
-void PairDPDFPM::read_restart(FILE *fp)
-{
-  read_restart_settings(fp);
-  allocate();
-  const int me = comm->me;
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
-      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-      if (setflag[i][j]) {
-        double values[NCOEFF];
-        if (me == 0) utils::sfread(FLERR, values, sizeof(double), NCOEFF, fp, nullptr, error);
-        MPI_Bcast(values, NCOEFF, MPI_DOUBLE, 0, world);
-        a0[i][j] = values[0];
-        gamma_c[i][j] = values[1];
-        gamma_s[i][j] = values[2];
-        exponent_d[i][j] = values[3];
-        cut[i][j] = values[4];
-      }
-    }
+  double values[NCOEFF];
+  if (comm->me == 0) utils::sfread(FLERR, values, sizeof(double), NCOEFF, fp, nullptr, error);
+  MPI_Bcast(values, NCOEFF, MPI_DOUBLE, 0, world);
+  a0[i][j] = values[0];
+  gamma_c[i][j] = values[1];
+  gamma_s[i][j] = values[2];
+  exponent_d[i][j] = values[3];
+  cut[i][j] = values[4];
 }
 
 void PairDPDFPM::write_data(FILE *fp)
@@ -477,7 +327,7 @@ double PairDPDFPM::single(int, int, int itype, int jtype, double rsq, double, do
   const etd::FpmCoefficients &c = coefficients(itype, jtype);
   if (rsq >= c.rcsq) return 0.0;
   const double r = std::sqrt(rsq);
-  if (r < EPSILON) return 0.0;
+  if (r < MIN_DISTANCE) return 0.0;
   fforce = factor_lj * c.a * (1.0 - r * c.inv_rc) / r;
   return etd::fpm_energy(c, r, factor_lj);
 }
@@ -492,10 +342,3 @@ void *PairDPDFPM::extract(const char *name, int &dim)
   return nullptr;
 }
 
-double PairDPDFPM::memory_usage()
-{
-  double bytes = Pair::memory_usage();
-  bytes += static_cast<double>(nmax_extras) *
-      ((friction ? 2 * FRICTION_VALUES : 0) + (split ? SPLIT_VALUES : 0)) * sizeof(double);
-  return bytes;
-}

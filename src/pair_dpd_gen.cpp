@@ -5,22 +5,18 @@
 #include "comm.h"
 #include "error.h"
 #include "force.h"
-#include "lammps_compat.h"
 #include "memory.h"
 #include "neigh_list.h"
 #include "update.h"
 #include "utils.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
 
 namespace {
-constexpr double EPSILON = 1.0e-10;    // coincident atoms (possible in DPD) get no force
-constexpr int FRICTION_VALUES = 3;
-constexpr int SPLIT_VALUES = 9;
+constexpr int NCOEFF = 6;    // a, gamma, s, exp_c, cutoff, cut_d (then the cut_d flag)
 
 bool is_keyword(const char *word)
 {
@@ -29,85 +25,44 @@ bool is_keyword(const char *word)
 }    // namespace
 
 PairDPDGen::PairDPDGen(LAMMPS *lmp) :
-    Pair(lmp), temperature(0.0), cut_global(0.0), seed(0), a0(nullptr), gamma(nullptr),
-    exponent_d(nullptr), exponent_c(nullptr), cut(nullptr), cut_d(nullptr), cut_d_set(nullptr),
-    stride(0), want_friction(false), want_split(false), conservative_only(false), friction(nullptr), split(nullptr),
-    nmax_extras(0)
+    PairDPDBase(lmp, "dpd/gen", false), a0(nullptr), gamma(nullptr), exponent_d(nullptr),
+    exponent_c(nullptr), cut_d(nullptr), cut_d_set(nullptr), stride(0)
 {
-  writedata = 1;
-  restartinfo = 1;
-  comm_reverse = FRICTION_VALUES + SPLIT_VALUES;
 }
 
 PairDPDGen::~PairDPDGen()
 {
   if (copymode) return;
   if (allocated) {
-    memory->destroy(setflag);
-    memory->destroy(cutsq);
     memory->destroy(a0);
     memory->destroy(gamma);
     memory->destroy(exponent_d);
     memory->destroy(exponent_c);
-    memory->destroy(cut);
     memory->destroy(cut_d);
     memory->destroy(cut_d_set);
   }
-  memory->destroy(friction);
-  memory->destroy(split);
 }
 
 void PairDPDGen::allocate()
 {
-  allocated = 1;
+  allocate_base();
   const int n = atom->ntypes;
-  memory->create(setflag, n + 1, n + 1, "pair:setflag");
-  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   memory->create(a0, n + 1, n + 1, "pair:a0");
   memory->create(gamma, n + 1, n + 1, "pair:gamma");
   memory->create(exponent_d, n + 1, n + 1, "pair:exponent_d");
   memory->create(exponent_c, n + 1, n + 1, "pair:exponent_c");
-  memory->create(cut, n + 1, n + 1, "pair:cut");
   memory->create(cut_d, n + 1, n + 1, "pair:cut_d");
   memory->create(cut_d_set, n + 1, n + 1, "pair:cut_d_set");
   for (int i = 0; i <= n; i++)
     for (int j = 0; j <= n; j++) {
-      setflag[i][j] = 0;
       cut_d_set[i][j] = 0;
       a0[i][j] = gamma[i][j] = 0.0;
       exponent_d[i][j] = 2.0;
       exponent_c[i][j] = 1.0;
-      cut[i][j] = cut_d[i][j] = 0.0;
+      cut_d[i][j] = 0.0;
     }
   stride = n + 1;
   coeffs.assign(static_cast<size_t>(stride) * stride, etd::PairCoefficients());
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairDPDGen::settings(int narg, char **arg)
-{
-  if (narg != 3)
-    error->all(FLERR, "Illegal pair_style dpd/gen command: expected 3 arguments (T cutoff seed), got {}",
-               narg);
-  temperature = utils::numeric(FLERR, arg[0], false, lmp);
-  cut_global = utils::numeric(FLERR, arg[1], false, lmp);
-  seed = utils::inumeric(FLERR, arg[2], false, lmp);
-  if (temperature < 0.0)
-    error->all(FLERR, "Illegal pair_style dpd/gen command: temperature must be >= 0, got {}", arg[0]);
-  if (cut_global <= 0.0)
-    error->all(FLERR, "Illegal pair_style dpd/gen command: cutoff must be > 0, got {}", arg[1]);
-  if (seed <= 0)
-    error->all(FLERR, "Illegal pair_style dpd/gen command: seed must be a positive integer, got {}",
-               arg[2]);
-  noise = etd::PairNoise(static_cast<std::uint64_t>(seed), etd::NoiseStream::PairScalar);
-
-  // as in stock pair styles: a new global cutoff resets the conservative cutoffs already set
-  if (allocated) {
-    for (int i = 1; i <= atom->ntypes; i++)
-      for (int j = i; j <= atom->ntypes; j++)
-        if (setflag[i][j]) cut[i][j] = cut_global;
-  }
 }
 
 /* ----------------------------------------------------------------------
@@ -179,24 +134,9 @@ void PairDPDGen::coeff(int narg, char **arg)
 
 /* ---------------------------------------------------------------------- */
 
-void PairDPDGen::init_style()
-{
-  if (comm->ghost_velocity == 0)
-    error->all(FLERR, "Pair style dpd/gen requires ghost atoms store velocity: use 'comm_modify vel yes'");
-  if (atom->tag_enable == 0)
-    error->all(FLERR, "Pair style dpd/gen requires atom IDs (its noise is keyed on them)");
-  if (update->dt <= 0.0) error->all(FLERR, "Pair style dpd/gen requires a positive timestep");
-  etd::compat::request_half_list(neighbor, this, instance_me);
-  // requests from the package's fixes and computes are renewed by their own init(), which
-  // LAMMPS calls after this one: a run without fix etd gets the full DPD force back
-  want_friction = want_split = conservative_only = false;
-}
-
 const etd::PairCoefficients *PairDPDGen::dpd_coefficients(int i, int j)
 {
-  if (i < 1 || j < 1 || i > atom->ntypes || j > atom->ntypes) return nullptr;
-  if (!setflag[std::min(i, j)][std::max(i, j)]) return nullptr;
-  return &coeffs[i * stride + j];
+  return type_pair_set(i, j) ? &coeffs[i * stride + j] : nullptr;
 }
 
 double PairDPDGen::init_one(int i, int j)
@@ -224,27 +164,10 @@ double PairDPDGen::init_one(int i, int j)
 
 /* ---------------------------------------------------------------------- */
 
-void PairDPDGen::grow_extras()
-{
-  if (atom->nmax <= nmax_extras) return;
-  nmax_extras = atom->nmax;
-  if (want_friction) memory->grow(friction, nmax_extras, FRICTION_VALUES, "pair:friction");
-  if (want_split) memory->grow(split, nmax_extras, SPLIT_VALUES, "pair:split");
-}
-
 void PairDPDGen::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  const bool extras = want_friction || want_split;
-  if (extras) {
-    if (!friction && want_friction) nmax_extras = 0;
-    if (!split && want_split) nmax_extras = 0;
-    grow_extras();
-    const int nzero = force->newton_pair ? atom->nlocal + atom->nghost : atom->nlocal;
-    if (want_friction && nzero > 0)
-      std::memset(&friction[0][0], 0, sizeof(double) * FRICTION_VALUES * nzero);
-    if (want_split && nzero > 0) std::memset(&split[0][0], 0, sizeof(double) * SPLIT_VALUES * nzero);
-  }
+  const bool extras = prepare_extras();
 
   // the extras are template flags so that the plain force loop carries none of their work
   if (conservative_only) {
@@ -259,7 +182,7 @@ void PairDPDGen::compute(int eflag, int vflag)
     if (want_split) eval<0, 1, 1, 1>(); else if (want_friction) eval<0, 1, 0, 1>(); else eval<0, 0, 0, 1>();
   }
 
-  if (extras && force->newton_pair) etd::compat::reverse_comm(comm, this);
+  finish_extras(extras);
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
@@ -305,7 +228,7 @@ template <int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE> void PairDPDGen:
       const int jtype = type[j];
       if (rsq >= cutsqi[jtype]) continue;
       const double r = std::sqrt(rsq);
-      if (r < EPSILON) continue;
+      if (r < MIN_DISTANCE) continue;
       const double rinv = 1.0 / r;
       const etd::PairCoefficients &c = crow[jtype];
 
@@ -366,98 +289,33 @@ template <int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE> void PairDPDGen:
   }
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   restart file: per set type pair the six values and the cut_d flag
+------------------------------------------------------------------------- */
 
-int PairDPDGen::pack_reverse_comm(int n, int first, double *buf)
+void PairDPDGen::write_type_pair(FILE *fp, int i, int j)
 {
-  int m = 0;
-  const int last = first + n;
-  for (int i = first; i < last; i++) {
-    if (want_friction)
-      for (int k = 0; k < FRICTION_VALUES; k++) buf[m++] = friction[i][k];
-    if (want_split)
-      for (int k = 0; k < SPLIT_VALUES; k++) buf[m++] = split[i][k];
-  }
-  return m;
+  const double values[NCOEFF] = {a0[i][j], gamma[i][j], exponent_d[i][j], exponent_c[i][j],
+                                 cut[i][j], cut_d[i][j]};
+  fwrite(values, sizeof(double), NCOEFF, fp);
+  fwrite(&cut_d_set[i][j], sizeof(int), 1, fp);
 }
 
-void PairDPDGen::unpack_reverse_comm(int n, int *list, double *buf)
+void PairDPDGen::read_type_pair(FILE *fp, int i, int j)
 {
-  int m = 0;
-  for (int i = 0; i < n; i++) {
-    const int j = list[i];
-    if (want_friction)
-      for (int k = 0; k < FRICTION_VALUES; k++) friction[j][k] += buf[m++];
-    if (want_split)
-      for (int k = 0; k < SPLIT_VALUES; k++) split[j][k] += buf[m++];
-  }
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairDPDGen::write_restart_settings(FILE *fp)
-{
-  fwrite(&temperature, sizeof(double), 1, fp);
-  fwrite(&cut_global, sizeof(double), 1, fp);
-  fwrite(&seed, sizeof(int), 1, fp);
-  fwrite(&mix_flag, sizeof(int), 1, fp);
-}
-
-void PairDPDGen::read_restart_settings(FILE *fp)
-{
+  double values[NCOEFF];
   if (comm->me == 0) {
-    utils::sfread(FLERR, &temperature, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &seed, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &mix_flag, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, values, sizeof(double), NCOEFF, fp, nullptr, error);
+    utils::sfread(FLERR, &cut_d_set[i][j], sizeof(int), 1, fp, nullptr, error);
   }
-  MPI_Bcast(&temperature, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&seed, 1, MPI_INT, 0, world);
-  MPI_Bcast(&mix_flag, 1, MPI_INT, 0, world);
-  noise = etd::PairNoise(static_cast<std::uint64_t>(seed), etd::NoiseStream::PairScalar);
-}
-
-void PairDPDGen::write_restart(FILE *fp)
-{
-  write_restart_settings(fp);
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      fwrite(&setflag[i][j], sizeof(int), 1, fp);
-      if (setflag[i][j]) {
-        const double values[6] = {a0[i][j], gamma[i][j], exponent_d[i][j], exponent_c[i][j],
-                                  cut[i][j], cut_d[i][j]};
-        fwrite(values, sizeof(double), 6, fp);
-        fwrite(&cut_d_set[i][j], sizeof(int), 1, fp);
-      }
-    }
-}
-
-void PairDPDGen::read_restart(FILE *fp)
-{
-  read_restart_settings(fp);
-  allocate();
-  const int me = comm->me;
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
-      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-      if (setflag[i][j]) {
-        double values[6];
-        if (me == 0) {
-          utils::sfread(FLERR, values, sizeof(double), 6, fp, nullptr, error);
-          utils::sfread(FLERR, &cut_d_set[i][j], sizeof(int), 1, fp, nullptr, error);
-        }
-        MPI_Bcast(values, 6, MPI_DOUBLE, 0, world);
-        MPI_Bcast(&cut_d_set[i][j], 1, MPI_INT, 0, world);
-        a0[i][j] = values[0];
-        gamma[i][j] = values[1];
-        exponent_d[i][j] = values[2];
-        exponent_c[i][j] = values[3];
-        cut[i][j] = values[4];
-        cut_d[i][j] = values[5];
-      }
-    }
+  MPI_Bcast(values, NCOEFF, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&cut_d_set[i][j], 1, MPI_INT, 0, world);
+  a0[i][j] = values[0];
+  gamma[i][j] = values[1];
+  exponent_d[i][j] = values[2];
+  exponent_c[i][j] = values[3];
+  cut[i][j] = values[4];
+  cut_d[i][j] = values[5];
 }
 
 void PairDPDGen::write_data(FILE *fp)
@@ -486,7 +344,7 @@ double PairDPDGen::single(int, int, int itype, int jtype, double rsq, double, do
   const etd::PairCoefficients &c = coefficients(itype, jtype);
   if (rsq >= c.rcsq_c) return 0.0;
   const double r = std::sqrt(rsq);
-  if (r < EPSILON) return 0.0;
+  if (r < MIN_DISTANCE) return 0.0;
   const double q = 1.0 - r * c.inv_rc_c;
   fforce = factor_lj * c.a * etd::power_of(q, c.conservative_kind, c.p) / r;
   return etd::pair_energy(c, rsq, r, factor_lj);
@@ -503,10 +361,3 @@ void *PairDPDGen::extract(const char *name, int &dim)
   return nullptr;
 }
 
-double PairDPDGen::memory_usage()
-{
-  double bytes = Pair::memory_usage();
-  bytes += static_cast<double>(nmax_extras) *
-      ((friction ? FRICTION_VALUES : 0) + (split ? SPLIT_VALUES : 0)) * sizeof(double);
-  return bytes;
-}

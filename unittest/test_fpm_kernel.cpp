@@ -205,3 +205,82 @@ TEST(FpmKernel, CentralNoiseIsTheDpdGenNumber)
     EXPECT_EQ(theta[0], noise.gaussian(8 + step, 3, step));
   }
 }
+
+TEST(FpmKernel, DissipationAndRandomForceAreThePairsOwn)
+{
+  // fpm_dissipation and fpm_random_force are the one evaluation of the frictions and the random
+  // force, shared by fpm_pair and fix etd's implicit scheme: fpm_pair's numbers bit for bit, and
+  // the analytic ones, gamma_X w, sqrt(w) and sqrt(w) [sigma_C theta_C e + sigma_S theta_A x e]
+  std::mt19937_64 gen(15);
+  const double kT = 1.3, gc = 3.5, gs = 5.5, rc = 1.2, isdt = 10.0;
+  for (double s : {0.5, 0.4244, 1.0, 2.0}) {
+    etd::FpmCoefficients c;
+    c.set(25.0, gc, gs, s, rc, kT);
+    for (int n = 0; n < 200; n++) {
+      const PairState p = random_state(gen, rc);
+      const double special = (n % 3 == 0) ? 0.36 : 1.0;
+      const double r = p.r();
+      const auto pair = evaluate(c, p, isdt, special);
+      const etd::FpmDissipation d = etd::fpm_dissipation(c, r, special);
+      EXPECT_EQ(d.central, pair.central_friction);
+      EXPECT_EQ(d.shear, pair.shear_friction);
+      const double rinv = 1.0 / r;    // e as fpm_pair forms it
+      const double e[3] = {p.del[0] * rinv, p.del[1] * rinv, p.del[2] * rinv};
+      const etd::FpmRandomForce random = etd::fpm_random_force(c, e, d.noise * isdt, p.noise);
+      for (int k = 0; k < 3; k++) EXPECT_EQ(random.central * e[k] + random.shear[k], pair.random[k]);
+
+      const double w = std::pow(1.0 - r / rc, s);
+      EXPECT_NEAR(d.central, special * gc * w, 1e-14 * gc);
+      EXPECT_NEAR(d.shear, special * gs * w, 1e-14 * gs);
+      EXPECT_NEAR(d.noise, std::sqrt(special * w), 1e-14);
+      const double amplitude = std::sqrt(special * w) * isdt;
+      EXPECT_NEAR(random.central, amplitude * std::sqrt(2 * kT * gc) * p.noise.central,
+                  1e-13 * amplitude * (1 + std::fabs(p.noise.central)));
+      const double *a = p.noise.shear;
+      const double axial_cross_e[3] = {a[1] * e[2] - a[2] * e[1], a[2] * e[0] - a[0] * e[2],
+                                       a[0] * e[1] - a[1] * e[0]};
+      double along_e = 0.0;
+      for (int k = 0; k < 3; k++) {
+        EXPECT_NEAR(random.shear[k], amplitude * std::sqrt(2 * kT * gs) * axial_cross_e[k],
+                    1e-13 * amplitude * 10);
+        along_e += random.shear[k] * e[k];
+      }
+      EXPECT_NEAR(along_e, 0.0, 1e-13 * amplitude * 10);    // the shear noise is normal to e
+    }
+  }
+  // zero friction and noise at the cutoff
+  etd::FpmCoefficients c;
+  c.set(25.0, gc, gs, 0.5, rc, kT);
+  const etd::FpmDissipation edge = etd::fpm_dissipation(c, rc);
+  EXPECT_EQ(edge.central, 0.0);
+  EXPECT_EQ(edge.shear, 0.0);
+  EXPECT_EQ(edge.noise, 0.0);
+}
+
+TEST(FpmKernel, ZeroShearDissipationIsTheDpdGenOne)
+{
+  // gamma_S = 0: the central friction and noise of dpd/gen's pair_dissipation
+  for (double s : {0.5, 2.0, 0.37})
+    for (double special : {1.0, 0.5}) {
+      etd::FpmCoefficients c;
+      c.set(25.0, 4.5, 0.0, s, 1.3, 1.7);
+      etd::PairCoefficients g;
+      g.set(25.0, 4.5, s, 1.0, 1.3, 1.3, 1.7);
+      for (double r = 0.01; r < 1.3; r += 0.0437) {
+        const etd::FpmDissipation f = etd::fpm_dissipation(c, r, special);
+        const etd::PairDissipation d = etd::pair_dissipation(g, r, special);
+        EXPECT_EQ(f.central, d.friction);
+        EXPECT_EQ(f.shear, 0.0);
+        EXPECT_NEAR(f.noise * c.sigma_c, d.noise, 1e-14 * g.sigma);
+        const double e[3] = {0.6, 0.0, -0.8};
+        etd::FpmNoise theta;
+        theta.central = 0.7;
+        theta.shear[0] = -1.2;
+        theta.shear[1] = 0.4;
+        theta.shear[2] = 2.0;
+        const etd::FpmRandomForce random = etd::fpm_random_force(c, e, f.noise, theta);
+        EXPECT_NEAR(random.central, d.noise * theta.central, 1e-14 * g.sigma);
+        for (int k = 0; k < 3; k++) EXPECT_EQ(random.shear[k], 0.0);
+      }
+    }
+}

@@ -208,6 +208,49 @@ TEST(PairKernel, PartsAndFluctuationDissipation)
   EXPECT_NEAR(scaled.random, 0.6 * full.random, 1e-12);
 }
 
+TEST(PairKernel, DissipationIsTheKernelsFrictionAndNoise)
+{
+  // pair_dissipation is the one evaluation of gamma w_D and sigma w_R: pair_force uses it (the
+  // same numbers, bit for bit) and they are the analytic weights, with sigma^2 = 2 gamma kT
+  // giving noise^2 = 2 kT friction at any distance and special factor
+  EXPECT_EQ(etd::special_root(1.0), 1.0);
+  EXPECT_EQ(etd::special_root(0.36), std::sqrt(0.36));
+  EXPECT_EQ(etd::special_root(0.0), 0.0);
+  const double kT = 0.7, gamma = 4.5, rc_d = 1.3, ev = -0.8, theta = 1.1, isdt = 10.0;
+  for (double s : {0.25, 0.4244, 0.5, 1.0, 1.5, 2.0, 3.7}) {
+    etd::PairCoefficients c;
+    c.set(25.0, gamma, s, 1.0, 1.0, rc_d, kT);
+    for (double special : {1.0, 0.36, 0.0}) {
+      for (double r = 0.013; r < rc_d; r += 0.0617) {
+        const etd::PairDissipation d = etd::pair_dissipation(c, r, special);
+        const etd::PairForce f = etd::pair_force(c, r * r, r, ev, theta, isdt, special);
+        EXPECT_EQ(d.friction, f.friction) << "s=" << s << " r=" << r;
+        EXPECT_EQ(d.noise * theta * isdt, f.random) << "s=" << s << " r=" << r;
+        const double w_d = std::pow(1.0 - r / rc_d, s);
+        EXPECT_NEAR(d.friction, special * gamma * w_d, 1e-14 * gamma);
+        EXPECT_NEAR(d.noise, std::sqrt(special * 2.0 * gamma * kT * w_d), 1e-14 * c.sigma);
+        EXPECT_NEAR(d.noise * d.noise, 2.0 * kT * d.friction, 1e-13 * gamma * kT);
+      }
+      // zero at the dissipative cutoff
+      const etd::PairDissipation edge = etd::pair_dissipation(c, rc_d, special);
+      EXPECT_EQ(edge.friction, 0.0);
+      EXPECT_EQ(edge.noise, 0.0);
+    }
+  }
+}
+
+TEST(PairKernel, DissipativeWeights)
+{
+  for (double s : {0.25, 0.4244, 0.5, 1.0, 1.5, 2.0, 3.7})
+    for (double q : {0.0, 0.01, 0.3, 0.99, 1.0}) {
+      const etd::DissipativeWeights w = etd::dissipative_weights(
+          q, etd::classify_power(s), etd::classify_power(0.5 * s), s);
+      EXPECT_NEAR(w.random, std::pow(q, 0.5 * s), 1e-15);
+      EXPECT_NEAR(w.dissipative, std::pow(q, s), 1e-15);
+      EXPECT_EQ(w.dissipative, w.random * w.random);    // for s = 2 too: w_R is q there
+    }
+}
+
 TEST(PairKernel, EnergyIsIntegralOfConservativeForce)
 {
   for (double p : {1.0, 0.5, 0.25, 1.7}) {

@@ -95,6 +95,45 @@ struct PairCoefficients {
   }
 };
 
+// sqrt(special) for the random force's special-bond factor; exact 1 for the common unbonded pair
+// without a square root (std::sqrt(1.0) is 1.0, so the result is the same either way).
+inline double special_root(double special) { return special == 1.0 ? 1.0 : std::sqrt(special); }
+
+// w_R = q^(s/2) and w_D = w_R^2 at q = 1 - r/rc_D (0 <= q <= 1), with the kinds of
+// PairCoefficients or FpmCoefficients. For s = 2, w_R = q and w_D = q q (the same value).
+struct DissipativeWeights {
+  double random = 0.0;         // w_R
+  double dissipative = 0.0;    // w_D
+};
+
+inline DissipativeWeights dissipative_weights(double q, PowerKind dissipative_kind,
+                                              PowerKind random_kind, double s)
+{
+  DissipativeWeights w;
+  w.random = power_of(q, random_kind, 0.5 * s);
+  w.dissipative = (dissipative_kind == PowerKind::Two) ? q * q : w.random * w.random;
+  return w;
+}
+
+// The friction and the noise amplitude of one pair at distance r inside rc_D (the one place
+// these are evaluated: pair_force and fix etd's implicit scheme, which applies them itself):
+//   friction = special gamma w_D(r)             (the pair's friction coefficient along e)
+//   noise = sqrt(special) sigma w_R(r)          (the random force is noise theta / sqrt(dt))
+struct PairDissipation {
+  double friction = 0.0;
+  double noise = 0.0;
+};
+
+inline PairDissipation pair_dissipation(const PairCoefficients &c, double r, double special = 1.0)
+{
+  const double q = 1.0 - r * c.inv_rc_d;
+  const DissipativeWeights w = dissipative_weights(q, c.dissipative_kind, c.random_kind, c.s);
+  PairDissipation out;
+  out.friction = special * c.gamma * w.dissipative;
+  out.noise = special_root(special) * c.sigma * w.random;
+  return out;
+}
+
 // Scalar pair force magnitudes along e (positive = repulsive), split into their parts.
 struct PairForce {
   double conservative = 0.0;
@@ -115,12 +154,10 @@ inline PairForce pair_force(const PairCoefficients &c, double rsq, double r, dou
     out.conservative = special * c.a * power_of(q, c.conservative_kind, c.p);
   }
   if (rsq < c.rcsq_d) {
-    const double q = 1.0 - r * c.inv_rc_d;
-    const double w_r = power_of(q, c.random_kind, 0.5 * c.s);
-    const double w_d = (c.dissipative_kind == PowerKind::Two) ? q * q : w_r * w_r;
-    out.friction = special * c.gamma * w_d;
+    const PairDissipation d = pair_dissipation(c, r, special);
+    out.friction = d.friction;
     out.dissipative = -out.friction * e_dot_v;
-    out.random = std::sqrt(special) * c.sigma * w_r * theta * inv_sqrt_dt;
+    out.random = d.noise * theta * inv_sqrt_dt;
   }
   return out;
 }

@@ -78,6 +78,46 @@ inline void cross(const double a[3], const double b[3], double out[3])
   out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+// The frictions and the noise factor of one pair at distance r inside rc (evaluated here for
+// fpm_pair and for fix etd's implicit scheme, which applies friction and noise itself):
+//   central = special gamma_C w,  shear = special gamma_S w,  noise = sqrt(special) sqrt(w)
+struct FpmDissipation {
+  double central = 0.0;
+  double shear = 0.0;
+  double noise = 0.0;
+};
+
+inline FpmDissipation fpm_dissipation(const FpmCoefficients &c, double r, double special = 1.0)
+{
+  const double q = 1.0 - r * c.inv_rc;
+  const DissipativeWeights w = dissipative_weights(q, c.dissipative_kind, c.random_kind, c.s);
+  FpmDissipation out;
+  out.central = special * c.gamma_c * w.dissipative;
+  out.shear = special * c.gamma_s * w.dissipative;
+  out.noise = special_root(special) * w.random;
+  return out;
+}
+
+// The random force of one pair on i, amplitude [sigma_C theta_C e + sigma_S theta_A x e]:
+// its central magnitude along e and its non-central part (the only one that makes a torque).
+// amplitude: the pair's noise factor (FpmDissipation::noise), times 1/sqrt(dt) for a force.
+struct FpmRandomForce {
+  double central = 0.0;
+  double shear[3] = {0.0, 0.0, 0.0};
+};
+
+inline FpmRandomForce fpm_random_force(const FpmCoefficients &c, const double e[3],
+                                       double amplitude, const FpmNoise &noise)
+{
+  FpmRandomForce out;
+  out.central = amplitude * c.sigma_c * noise.central;
+  double shear_dir[3];
+  cross(noise.shear, e, shear_dir);
+  const double shear_amplitude = amplitude * c.sigma_s;
+  for (int k = 0; k < 3; k++) out.shear[k] = shear_amplitude * shear_dir[k];
+  return out;
+}
+
 // del = r_i - r_j (r = |del| > 0, inside rc), v_ij = v_i - v_j, omega_sum = Omega_i + Omega_j.
 // special: special-bond factor (conservative and dissipative scale by it, random by its root).
 inline FpmPairResult fpm_pair(const FpmCoefficients &c, const double del[3], double r,
@@ -89,32 +129,26 @@ inline FpmPairResult fpm_pair(const FpmCoefficients &c, const double del[3], dou
   const double rinv = 1.0 / r;
   const double e[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
   const double q = 1.0 - r * c.inv_rc;
-  const double w_r = power_of(q, c.random_kind, 0.5 * c.s);
-  const double w = (c.dissipative_kind == PowerKind::Two) ? q * q : w_r * w_r;
-  out.central_friction = special * c.gamma_c * w;
-  out.shear_friction = special * c.gamma_s * w;
+  const FpmDissipation d = fpm_dissipation(c, r, special);
+  out.central_friction = d.central;
+  out.shear_friction = d.shear;
 
   // slip velocity at the mid-point; its rotational part is perpendicular to e
   const double half_del[3] = {0.5 * del[0], 0.5 * del[1], 0.5 * del[2]};
   double spin_slip[3];
   cross(half_del, omega_sum, spin_slip);
   const double e_dot_v = e[0] * v_ij[0] + e[1] * v_ij[1] + e[2] * v_ij[2];
-  double shear_dir[3];
-  cross(noise.shear, e, shear_dir);
+  const FpmRandomForce random = fpm_random_force(c, e, d.noise * inv_sqrt_dt, noise);
 
   const double fc = special * c.a * q;
-  const double random_amp = std::sqrt(special) * w_r * inv_sqrt_dt;
-  const double central_random = random_amp * c.sigma_c * noise.central;
-  const double shear_random = random_amp * c.sigma_s;
   double shear_force[3];    // the non-central part: the only one that makes a torque
   for (int k = 0; k < 3; k++) {
     const double v_perp = v_ij[k] - e_dot_v * e[k];
     const double shear_dissipative = -out.shear_friction * (v_perp + spin_slip[k]);
-    const double shear_noise = shear_random * shear_dir[k];
     out.conservative[k] = fc * e[k];
     out.dissipative[k] = -out.central_friction * e_dot_v * e[k] + shear_dissipative;
-    out.random[k] = central_random * e[k] + shear_noise;
-    shear_force[k] = shear_dissipative + shear_noise;
+    out.random[k] = random.central * e[k] + random.shear[k];
+    shear_force[k] = shear_dissipative + random.shear[k];
   }
   // T = -(r_ij/2) x F_ij; the central parts are parallel to r_ij and drop out exactly
   double t[3];

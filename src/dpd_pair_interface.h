@@ -1,6 +1,10 @@
-// ETD-DPD: what the package's pair styles offer to its integrator and computes.
-#ifndef ETD_DPD_FRICTION_PROVIDER_H
-#define ETD_DPD_FRICTION_PROVIDER_H
+// ETD-DPD: the contracts between the package's pair styles, its integrators and its computes.
+//
+// Every DPD pair style of the package implements it (through PairDPDBase); fix etd and compute
+// dpd/split find those styles, alone or inside pair hybrid / hybrid/overlay, by this type
+// (dpd_style_lookup.h), never by their names.
+#ifndef ETD_DPD_PAIR_INTERFACE_H
+#define ETD_DPD_PAIR_INTERFACE_H
 
 #include <cstdint>
 
@@ -13,7 +17,7 @@ struct FpmCoefficients;
 // ghost contributions already reverse-communicated):
 //   diagonal friction Gamma_i,alpha = sum_j gamma_ij w_D e_alpha^2      (fix etd)
 //   conservative, dissipative and random parts of the pair force       (compute dpd/split)
-class DpdExtrasProvider {
+class DpdPairInterface {
  public:
   // Each user sets its flag once in init(); the pair style then fills the arrays every compute().
   virtual void request_diagonal_friction() = 0;
@@ -36,7 +40,20 @@ class DpdExtrasProvider {
  protected:
   // never deleted through this interface; non-virtual so that it does not constrain the
   // exception specification of LAMMPS's virtual destructors (which differs between versions)
-  ~DpdExtrasProvider() = default;
+  ~DpdPairInterface() = default;
+};
+
+// An integrator that applies the DPD friction and noise itself, so that the pair styles compute
+// only their conservative part (fix etd scheme implicit): compute dpd/split reads the
+// dissipative and random parts from it. Found among the fixes by this type.
+class DpdFrictionIntegrator {
+ public:
+  // set once in the user's init(); the integrator then records the split every friction step
+  virtual void request_split() = 0;
+  virtual double **dissipative_random_split() const = 0;    // [nlocal][6]: D xyz, R xyz
+
+ protected:
+  ~DpdFrictionIntegrator() = default;
 };
 
 }    // namespace etd

@@ -1,9 +1,9 @@
-// ETD-DPD: fix etd. Positions: x += v dt. Velocities, per component, after the forces of the
+// ETD-DPD: fix etd scheme diagonal. Positions: x += v dt. Velocities, per component, after the forces of the
 // new positions (and old velocities) are known:
 //   v' = e^z v + dt [phi1 A_n]                                  (order 1, Mai-Duy et al. 2013, eq 31)
 //   v' = e^z v + dt [(phi1 + phi2) A_n - phi2 A_(n-1)]          (order 2, Mai-Duy et al. 2013, eq 7)
 // with z = -Gamma dt / m and A = (F + Gamma v)/m, Gamma the diagonal friction from the pair style.
-#include "fix_etd.h"
+#include "fix_etd_diagonal.h"
 
 #include "atom.h"
 #include "dpd_style_lookup.h"
@@ -26,7 +26,7 @@ namespace {
 constexpr int STATE = 4;    // A_(n-1) x, y, z and a validity flag
 }
 
-FixETD::FixETD(LAMMPS *lmp, int narg, char **arg) :
+FixETDDiagonal::FixETDDiagonal(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), order(1), noise(Noise::Piecewise), conserve_momentum(false), dt(0.0),
     previous_forcing(nullptr)
 {
@@ -72,26 +72,21 @@ FixETD::FixETD(LAMMPS *lmp, int narg, char **arg) :
     for (int k = 0; k < STATE; k++) previous_forcing[i][k] = 0.0;
 }
 
-FixETD::~FixETD()
+FixETDDiagonal::~FixETDDiagonal()
 {
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(previous_forcing);
 }
 
-int FixETD::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE | POST_RUN; }
+int FixETDDiagonal::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE | POST_RUN; }
 
-void FixETD::init()
+void FixETDDiagonal::init()
 {
   dt = update->dt;
-  if (utils::strmatch(update->integrate_style, "^respa"))
-    error->all(FLERR, "Fix etd does not support run_style respa");
-  providers = etd::find_dpd_providers(lmp);
+  dpd_styles = etd::fix_etd_pair_styles(lmp, "diagonal friction");
   rotation_checked = false;
-  if (providers.empty())
-    error->all(FLERR, "Fix etd requires pair style dpd/gen or dpd/fpm (alone or in pair "
-               "hybrid/overlay) to supply the diagonal friction");
-  for (auto *p : providers) {
+  for (auto *p : dpd_styles) {
     p->request_diagonal_friction();
     if (needs_random_part()) p->request_force_split();
   }
@@ -103,7 +98,7 @@ void FixETD::init()
 // from a forcing of other velocities, so the history is dropped (that step is order 1). Sum of
 // v^2 over the group at the end of a run and at the start of the next one, to a relative 1e-10
 // (the summation order may differ, the values may not).
-double FixETD::velocity_fingerprint() const
+double FixETDDiagonal::velocity_fingerprint() const
 {
   double local = 0.0, total = 0.0;
   for (int i = 0; i < atom->nlocal; i++)
@@ -113,7 +108,7 @@ double FixETD::velocity_fingerprint() const
   return total;
 }
 
-void FixETD::setup(int)
+void FixETDDiagonal::setup(int)
 {
   neighbor_safety.start_run(lmp);
   if (order != 2 || fingerprint_at_end < 0.0) return;
@@ -122,21 +117,21 @@ void FixETD::setup(int)
     for (int i = 0; i < atom->nlocal; i++) previous_forcing[i][3] = 0.0;
 }
 
-void FixETD::post_run()
+void FixETDDiagonal::post_run()
 {
   neighbor_safety.end_run(lmp, id);
   if (order == 2) fingerprint_at_end = velocity_fingerprint();
 }
 
 // an atom created between runs has no history
-void FixETD::set_arrays(int i)
+void FixETDDiagonal::set_arrays(int i)
 {
   for (int k = 0; k < STATE; k++) previous_forcing[i][k] = 0.0;
 }
 
-void FixETD::reset_dt() { dt = update->dt; }
+void FixETDDiagonal::reset_dt() { dt = update->dt; }
 
-void FixETD::initial_integrate(int)
+void FixETDDiagonal::initial_integrate(int)
 {
   double **x = atom->x;
   double **v = atom->v;
@@ -150,7 +145,7 @@ void FixETD::initial_integrate(int)
     }
 }
 
-void FixETD::final_integrate()
+void FixETDDiagonal::final_integrate()
 {
   double **v = atom->v;
   double **f = atom->f;
@@ -166,9 +161,9 @@ void FixETD::final_integrate()
   // noise (that multiplies the noise variance by up to 5 at large |z|)
   const bool separate_noise = needs_random_part();
   const bool exact_noise = (noise == Noise::Exact);
-  // the providers' arrays, looked up once per step rather than per atom and component
+  // the dpd_styles' arrays, looked up once per step rather than per atom and component
   std::vector<double **> friction_arrays, split_arrays;
-  for (auto *p : providers) {
+  for (auto *p : dpd_styles) {
     friction_arrays.push_back(p->diagonal_friction());
     if (separate_noise) split_arrays.push_back(p->force_split());
   }
@@ -226,7 +221,7 @@ void FixETD::final_integrate()
       for (int k = 0; k < 3; k++) v[i][k] -= momentum_correction[k];
 }
 
-double FixETD::compute_vector(int n) { return momentum_correction[n]; }
+double FixETDDiagonal::compute_vector(int n) { return momentum_correction[n]; }
 
 /* ----------------------------------------------------------------------
    Angular velocities, where a pair style supplies the rotational friction diagonal (dpd/fpm):
@@ -236,11 +231,11 @@ double FixETD::compute_vector(int n) { return momentum_correction[n]; }
    The first-order formula is used for every 'order' setting (there is no torque history).
 ------------------------------------------------------------------------- */
 
-void FixETD::update_angular_velocities()
+void FixETDDiagonal::update_angular_velocities()
 {
   if (!atom->omega_flag || !atom->torque_flag) return;
   std::vector<double **> rotational;
-  for (auto *p : providers)
+  for (auto *p : dpd_styles)
     if (double **g = p->rotational_friction()) rotational.push_back(g);
   const double *radius = atom->radius;
   const double *rmass = atom->rmass;
@@ -281,33 +276,33 @@ void FixETD::update_angular_velocities()
 
 /* ---- per-atom state: A_(n-1) migrates with atoms and is written to restart files ---- */
 
-void FixETD::grow_arrays(int nmax) { memory->grow(previous_forcing, nmax, STATE, "etd:previous_forcing"); }
+void FixETDDiagonal::grow_arrays(int nmax) { memory->grow(previous_forcing, nmax, STATE, "etd:previous_forcing"); }
 
-void FixETD::copy_arrays(int i, int j, int)
+void FixETDDiagonal::copy_arrays(int i, int j, int)
 {
   for (int k = 0; k < STATE; k++) previous_forcing[j][k] = previous_forcing[i][k];
 }
 
-int FixETD::pack_exchange(int i, double *buf)
+int FixETDDiagonal::pack_exchange(int i, double *buf)
 {
   for (int k = 0; k < STATE; k++) buf[k] = previous_forcing[i][k];
   return STATE;
 }
 
-int FixETD::unpack_exchange(int nlocal, double *buf)
+int FixETDDiagonal::unpack_exchange(int nlocal, double *buf)
 {
   for (int k = 0; k < STATE; k++) previous_forcing[nlocal][k] = buf[k];
   return STATE;
 }
 
-int FixETD::pack_restart(int i, double *buf)
+int FixETDDiagonal::pack_restart(int i, double *buf)
 {
   buf[0] = STATE + 1;
   for (int k = 0; k < STATE; k++) buf[k + 1] = previous_forcing[i][k];
   return STATE + 1;
 }
 
-void FixETD::unpack_restart(int nlocal, int nth)
+void FixETDDiagonal::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
   int m = 0;
@@ -316,7 +311,7 @@ void FixETD::unpack_restart(int nlocal, int nth)
   for (int k = 0; k < STATE; k++) previous_forcing[nlocal][k] = extra[nlocal][m++];
 }
 
-int FixETD::size_restart(int) { return STATE + 1; }
-int FixETD::maxsize_restart() { return STATE + 1; }
+int FixETDDiagonal::size_restart(int) { return STATE + 1; }
+int FixETDDiagonal::maxsize_restart() { return STATE + 1; }
 
-double FixETD::memory_usage() { return static_cast<double>(atom->nmax) * STATE * sizeof(double); }
+double FixETDDiagonal::memory_usage() { return static_cast<double>(atom->nmax) * STATE * sizeof(double); }

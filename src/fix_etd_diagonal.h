@@ -1,6 +1,7 @@
-// ETD-DPD: fix etd, exponential time differencing for low-mass DPD (see doc/fix_etd.rst).
-#ifndef ETD_FIX_ETD_H
-#define ETD_FIX_ETD_H
+// ETD-DPD: fix etd ... scheme diagonal (the default), exponential time differencing with each
+// atom's diagonal of the friction (see doc/fix_etd.rst).
+#ifndef ETD_FIX_ETD_DIAGONAL_H
+#define ETD_FIX_ETD_DIAGONAL_H
 
 #include "fix.h"
 
@@ -8,14 +9,14 @@
 
 #include <vector>
 
-namespace etd { class DpdExtrasProvider; }
+namespace etd { class DpdPairInterface; }
 
 namespace LAMMPS_NS {
 
-class FixETD : public Fix {
+class FixETDDiagonal : public Fix {
  public:
-  FixETD(class LAMMPS *, int, char **);
-  ~FixETD() override;
+  FixETDDiagonal(class LAMMPS *, int, char **);
+  ~FixETDDiagonal() override;
   int setmask() override;
   void init() override;
   void setup(int) override;
@@ -50,7 +51,7 @@ class FixETD : public Fix {
   void update_angular_velocities();    // pair styles with rotation (dpd/fpm)
   bool rotation_checked = false;
   int rotation_active = 0;
-  std::vector<etd::DpdExtrasProvider *> providers;
+  std::vector<etd::DpdPairInterface *> dpd_styles;
   double **previous_forcing;    // [nmax][4]: A_(n-1) per component, and 1 where it is valid
   double momentum_correction[3];    // last correction applied (output)
 };
