@@ -20,11 +20,14 @@ using namespace LAMMPS_NS;
 static constexpr int NVALUES = 9;
 
 ComputeDPDSplit::ComputeDPDSplit(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), dpd_style(nullptr), implicit(nullptr), implicit_id(nullptr), nmax(0), per_atom(nullptr)
+    Compute(lmp, narg, arg), dpd_style(nullptr), implicit(nullptr), implicit_id(nullptr), nmax(0),
+    per_atom(nullptr)
 {
   if (narg != 3)
-    error->all(FLERR, "Illegal compute dpd/split command: expected 'compute ID group dpd/split', "
-               "got {} extra arguments", narg - 3);
+    error->all(FLERR,
+               "Illegal compute dpd/split command: expected 'compute ID group dpd/split', "
+               "got {} extra arguments",
+               narg - 3);
   vector_flag = 1;
   size_vector = NVALUES;
   extvector = 1;
@@ -45,7 +48,8 @@ void ComputeDPDSplit::init()
 {
   auto dpd_styles = etd::find_dpd_pair_styles(lmp);
   if (dpd_styles.empty())
-    error->all(FLERR, "Compute dpd/split requires pair style dpd/gen or dpd/fpm (alone or in hybrid)");
+    error->all(FLERR,
+               "Compute dpd/split requires pair style dpd/gen or dpd/fpm (alone or in hybrid)");
   if (dpd_styles.size() > 1)
     error->all(FLERR, "Compute dpd/split supports one dpd/gen or dpd/fpm sub-style, found {}",
                dpd_styles.size());
@@ -101,4 +105,7 @@ void ComputeDPDSplit::compute_vector()
   MPI_Allreduce(local, vector, NVALUES, MPI_DOUBLE, MPI_SUM, world);
 }
 
-double ComputeDPDSplit::memory_usage() { return static_cast<double>(nmax) * NVALUES * sizeof(double); }
+double ComputeDPDSplit::memory_usage()
+{
+  return static_cast<double>(nmax) * NVALUES * sizeof(double);
+}

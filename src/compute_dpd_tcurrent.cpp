@@ -18,16 +18,22 @@ ComputeDPDTCurrent::ComputeDPDTCurrent(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), nwave(0)
 {
   if (narg != 4)
-    error->all(FLERR, "Illegal compute dpd/tcurrent command: expected 'compute ID group "
-               "dpd/tcurrent K', got {} arguments after the style", narg - 3);
+    error->all(FLERR,
+               "Illegal compute dpd/tcurrent command: expected 'compute ID group "
+               "dpd/tcurrent K', got {} arguments after the style",
+               narg - 3);
   const std::string text = arg[3];
   if (!utils::is_integer(text))
-    error->all(FLERR, "Compute dpd/tcurrent: K (number of wave numbers per axis) must be a "
-               "positive integer, got '{}'", text);
+    error->all(FLERR,
+               "Compute dpd/tcurrent: K (number of wave numbers per axis) must be a "
+               "positive integer, got '{}'",
+               text);
   const long value = std::strtol(text.c_str(), nullptr, 10);
   if (value < 1 || value > 100000)
-    error->all(FLERR, "Compute dpd/tcurrent: K (number of wave numbers per axis) must be "
-               "between 1 and 100000, got {}", text);
+    error->all(FLERR,
+               "Compute dpd/tcurrent: K (number of wave numbers per axis) must be "
+               "between 1 and 100000, got {}",
+               text);
   nwave = static_cast<int>(value);
 
   vector_flag = 1;
@@ -37,7 +43,10 @@ ComputeDPDTCurrent::ComputeDPDTCurrent(LAMMPS *lmp, int narg, char **arg) :
   local.assign(size_vector, 0.0);
 }
 
-ComputeDPDTCurrent::~ComputeDPDTCurrent() { delete[] vector; }
+ComputeDPDTCurrent::~ComputeDPDTCurrent()
+{
+  delete[] vector;
+}
 
 void ComputeDPDTCurrent::init()
 {
@@ -45,7 +54,8 @@ void ComputeDPDTCurrent::init()
   if (domain->triclinic)
     error->all(FLERR, "Compute dpd/tcurrent requires an orthogonal box (k along the box axes)");
   if (!domain->xperiodic || !domain->yperiodic || !domain->zperiodic)
-    error->all(FLERR, "Compute dpd/tcurrent requires a box periodic in x, y and z "
+    error->all(FLERR,
+               "Compute dpd/tcurrent requires a box periodic in x, y and z "
                "(k = 2 pi j / L is a wave vector of the periodic box only)");
 }
 

@@ -47,9 +47,9 @@ struct DPDDesign::Request {
 void DPDDesign::command(int narg, char **arg)
 {
   const Request request = parse(narg, arg);
-  const kt::Design design =
-      request.by_schmidt ? kt::design_from_schmidt(request.fluid, request.eta, request.target)
-                         : kt::design_from_particle_diffusion_time(request.fluid, request.eta, request.target);
+  const kt::Design design = request.by_schmidt
+      ? kt::design_from_schmidt(request.fluid, request.eta, request.target)
+      : kt::design_from_particle_diffusion_time(request.fluid, request.eta, request.target);
   if (!design.feasible) refuse(request, design);
   store_and_report(request, design);
 }
@@ -59,17 +59,24 @@ DPDDesign::Request DPDDesign::parse(int narg, char **arg)
   if (narg < 1) error->all(FLERR, "Illegal dpd/design command: expected '{}'", usage);
   const std::string name = arg[0];
   if (!utils::is_id(name))
-    error->all(FLERR, "dpd/design: name '{}' must contain only letters, digits and underscores "
-               "(it prefixes the variables the command sets)", name);
+    error->all(FLERR,
+               "dpd/design: name '{}' must contain only letters, digits and underscores "
+               "(it prefixes the variables the command sets)",
+               name);
   if (utils::is_double(name))
-    error->all(FLERR, "dpd/design: the first argument is the name of the design, got the "
-               "number '{}'; expected '{}'", name, usage);
+    error->all(FLERR,
+               "dpd/design: the first argument is the name of the design, got the "
+               "number '{}'; expected '{}'",
+               name, usage);
 
   Keyword keys[] = {
-      {"eta", "viscosity", 0.0, false},       {"sc", "Schmidt number", 0.0, false},
+      {"eta", "viscosity", 0.0, false},
+      {"sc", "Schmidt number", 0.0, false},
       {"taup", "particle diffusion time", 0.0, false},
-      {"density", "number density", 0.0, false}, {"mass", "particle mass", 0.0, false},
-      {"temp", "temperature kBT", 0.0, false},   {"cutoff", "cutoff", 0.0, false},
+      {"density", "number density", 0.0, false},
+      {"mass", "particle mass", 0.0, false},
+      {"temp", "temperature kBT", 0.0, false},
+      {"cutoff", "cutoff", 0.0, false},
   };
   enum { ETA, SC, TAUP, DENSITY, MASS, TEMP, CUTOFF, NKEYS };
 
@@ -96,8 +103,10 @@ DPDDesign::Request DPDDesign::parse(int narg, char **arg)
   if (keys[SC].given && keys[TAUP].given)
     error->all(FLERR, "dpd/design: give either sc or taup, not both (each fixes the diffusivity)");
   if (!keys[SC].given && !keys[TAUP].given)
-    error->all(FLERR, "dpd/design: missing keyword sc or taup (Schmidt number or particle "
-               "diffusion time); expected '{}'", usage);
+    error->all(FLERR,
+               "dpd/design: missing keyword sc or taup (Schmidt number or particle "
+               "diffusion time); expected '{}'",
+               usage);
   for (int k : {ETA, DENSITY, MASS, TEMP, CUTOFF})
     if (!keys[k].given)
       error->all(FLERR, "dpd/design: missing keyword {} ({}); expected '{}'", keys[k].name,
@@ -118,15 +127,18 @@ void DPDDesign::refuse(const Request &request, const kt::Design &design)
   const kt::FluidState &fluid = request.fluid;
   const double eta = request.eta;
   if (request.by_schmidt)
-    error->all(FLERR, "dpd/design: no exponent s > 0 gives eta = {} with Sc = {} at {} "
+    error->all(FLERR,
+               "dpd/design: no exponent s > 0 gives eta = {} with Sc = {} at {} "
                "(E = {:.6g}, needs E > 20): Sc must exceed {:.6g} at this eta, or eta must be "
                "below {:.6g} at this Sc",
                eta, request.target, request.state(), design.e, kt::min_schmidt_number(fluid, eta),
                kt::max_viscosity_for_schmidt(fluid, request.target));
-  error->all(FLERR, "dpd/design: no exponent s > 0 gives eta = {} with tau_P = {} at {} "
+  error->all(FLERR,
+             "dpd/design: no exponent s > 0 gives eta = {} with tau_P = {} at {} "
              "(E = {:.6g}, needs E > 20): tau_P must exceed {:.6g} at this eta, or eta must "
              "be below {:.6g} at this tau_P",
-             eta, request.target, request.state(), design.e, kt::min_particle_diffusion_time(fluid, eta),
+             eta, request.target, request.state(), design.e,
+             kt::min_particle_diffusion_time(fluid, eta),
              kt::max_viscosity_for_particle_diffusion_time(fluid, request.target));
 }
 
@@ -147,8 +159,8 @@ void DPDDesign::store_and_report(const Request &request, const kt::Design &desig
   const double l0 = kt::correlation_length(fluid, gamma, s);
 
   const std::pair<const char *, double> outputs[] = {
-      {"s", s},      {"gamma", gamma},      {"sigma", sigma}, {"eta", eta_total},
-      {"D", diffusivity}, {"Sc", schmidt}, {"tauP", tau_p}, {"E", design.e},
+      {"s", s},           {"gamma", gamma}, {"sigma", sigma}, {"eta", eta_total},
+      {"D", diffusivity}, {"Sc", schmidt},  {"tauP", tau_p},  {"E", design.e},
   };
   std::string names;
   for (const auto &out : outputs) {
@@ -160,10 +172,12 @@ void DPDDesign::store_and_report(const Request &request, const kt::Design &desig
   if (comm->me == 0) {
     const std::string target = request.by_schmidt ? fmt::format("Sc = {}", request.target)
                                                   : fmt::format("tau_P = {}", request.target);
-    utils::logmesg(lmp, "dpd/design {}: eta = {} and {} at {}\n", name, eta, target, request.state());
-    utils::logmesg(lmp, "  E = {:.8g}  ->  s = {:.8g}, gamma = {:.8g}, sigma = {:.8g}\n",
-                   design.e, s, gamma, sigma);
-    utils::logmesg(lmp, "  kinetic theory of this fluid: eta = {:.6g} (dissipative {:.6g} + "
+    utils::logmesg(lmp, "dpd/design {}: eta = {} and {} at {}\n", name, eta, target,
+                   request.state());
+    utils::logmesg(lmp, "  E = {:.8g}  ->  s = {:.8g}, gamma = {:.8g}, sigma = {:.8g}\n", design.e,
+                   s, gamma, sigma);
+    utils::logmesg(lmp,
+                   "  kinetic theory of this fluid: eta = {:.6g} (dissipative {:.6g} + "
                    "kinetic {:.4g}), D = {:.6g}, Sc = {:.6g}, tau_P = {:.6g}, l0 = {:.4g}\n",
                    eta_total, eta_total - eta_kinetic, eta_kinetic, diffusivity, schmidt, tau_p,
                    l0);
@@ -171,11 +185,13 @@ void DPDDesign::store_and_report(const Request &request, const kt::Design &desig
   }
   // The design imposes the dissipative part of eta; say so when the kinetic part matters.
   if (eta_kinetic > 0.01 * eta)
-    error->warning(FLERR, "dpd/design {}: the kinetic part of the viscosity ({:.4g}) is {:.2g} % "
-                   "of eta; the design imposes only the dissipative part", name, eta_kinetic,
-                   100.0 * eta_kinetic / eta);
+    error->warning(FLERR,
+                   "dpd/design {}: the kinetic part of the viscosity ({:.4g}) is {:.2g} % "
+                   "of eta; the design imposes only the dissipative part",
+                   name, eta_kinetic, 100.0 * eta_kinetic / eta);
   if (l0 >= fluid.cutoff)
-    error->warning(FLERR, "dpd/design {}: correlation length l0 = {:.4g} is not below the "
+    error->warning(FLERR,
+                   "dpd/design {}: correlation length l0 = {:.4g} is not below the "
                    "cutoff {}: particle regime, where the kinetic-theory estimates are poor",
                    name, l0, fluid.cutoff);
 }

@@ -40,13 +40,15 @@ std::vector<etd::DpdPairInterface *> etd::find_dpd_pair_styles(LAMMPS_NS::LAMMPS
 }
 
 std::vector<etd::DpdPairInterface *> etd::fix_etd_pair_styles(LAMMPS_NS::LAMMPS *lmp,
-                                                            const char *friction)
+                                                              const char *friction)
 {
   if (LAMMPS_NS::utils::strmatch(lmp->update->integrate_style, "^respa"))
     lmp->error->all(FLERR, "Fix etd does not support run_style respa");
   std::vector<DpdPairInterface *> styles = find_dpd_pair_styles(lmp);
   if (styles.empty())
-    lmp->error->all(FLERR, "Fix etd requires pair style dpd/gen or dpd/fpm (alone or in pair "
-                    "hybrid/overlay) to supply the {}", friction);
+    lmp->error->all(FLERR,
+                    "Fix etd requires pair style dpd/gen or dpd/fpm (alone or in pair "
+                    "hybrid/overlay) to supply the {}",
+                    friction);
   return styles;
 }

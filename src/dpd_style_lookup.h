@@ -16,6 +16,6 @@ std::vector<DpdPairInterface *> find_dpd_pair_styles(LAMMPS_NS::LAMMPS *lmp);
 // the package's pair styles found; ERROR if there are none, naming what the scheme takes from
 // them (friction: e.g. "diagonal friction").
 std::vector<DpdPairInterface *> fix_etd_pair_styles(LAMMPS_NS::LAMMPS *lmp, const char *friction);
-}
+}    // namespace etd
 
 #endif

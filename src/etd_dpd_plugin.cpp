@@ -2,9 +2,9 @@
 #include "compute_dpd_split.h"
 #include "compute_dpd_tcurrent.h"
 #include "dpd_design.h"
+#include "error.h"
 #include "fix_etd_diagonal.h"
 #include "fix_etd_implicit.h"
-#include "error.h"
 #include "fix_wall_cylinder_bounce.h"
 #include "fix_wall_thermal_layer.h"
 #include "lammpsplugin.h"
@@ -17,8 +17,14 @@
 using namespace LAMMPS_NS;
 
 namespace {
-Pair *create_pair_dpd_gen(LAMMPS *lmp) { return new PairDPDGen(lmp); }
-Pair *create_pair_dpd_fpm(LAMMPS *lmp) { return new PairDPDFPM(lmp); }
+Pair *create_pair_dpd_gen(LAMMPS *lmp)
+{
+  return new PairDPDGen(lmp);
+}
+Pair *create_pair_dpd_fpm(LAMMPS *lmp)
+{
+  return new PairDPDFPM(lmp);
+}
 Compute *create_compute_dpd_split(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputeDPDSplit(lmp, narg, arg);
@@ -31,7 +37,8 @@ Fix *create_fix_etd(LAMMPS *lmp, int narg, char **arg)
       const std::string scheme = arg[iarg + 1];
       if (scheme == "implicit") return new FixETDImplicit(lmp, narg, arg);
       if (scheme != "diagonal")
-        lmp->error->all(FLERR, "Illegal fix etd command: scheme must be diagonal or implicit, got {}", scheme);
+        lmp->error->all(
+            FLERR, "Illegal fix etd command: scheme must be diagonal or implicit, got {}", scheme);
     }
   return new FixETDDiagonal(lmp, narg, arg);
 }
@@ -39,7 +46,10 @@ Compute *create_compute_dpd_tcurrent(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputeDPDTCurrent(lmp, narg, arg);
 }
-Command *create_dpd_design(LAMMPS *lmp) { return new DPDDesign(lmp); }
+Command *create_dpd_design(LAMMPS *lmp)
+{
+  return new DPDDesign(lmp);
+}
 Fix *create_fix_wall_thermal_layer(LAMMPS *lmp, int narg, char **arg)
 {
   return new FixWallThermalLayer(lmp, narg, arg);

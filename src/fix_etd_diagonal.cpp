@@ -33,7 +33,7 @@ FixETDDiagonal::FixETDDiagonal(LAMMPS *lmp, int narg, char **arg) :
   time_integrate = 1;
   restart_peratom = 1;
   create_attribute = 1;    // set_arrays(): new atoms start without order-2 history
-  maxexchange = STATE;    // per-atom values this fix adds to each migrating atom
+  maxexchange = STATE;     // per-atom values this fix adds to each migrating atom
   vector_flag = 1;
   size_vector = 3;
   extvector = 0;
@@ -43,22 +43,34 @@ FixETDDiagonal::FixETDDiagonal(LAMMPS *lmp, int narg, char **arg) :
   int iarg = 3;
   while (iarg < narg) {
     const std::string key = arg[iarg];
-    if (iarg + 2 > narg) error->all(FLERR, "Illegal fix etd command: keyword {} needs a value", key);
+    if (iarg + 2 > narg)
+      error->all(FLERR, "Illegal fix etd command: keyword {} needs a value", key);
     const std::string value = arg[iarg + 1];
     if (key == "order") {
-      if (value == "1") order = 1;
-      else if (value == "2") order = 2;
-      else error->all(FLERR, "Illegal fix etd command: order must be 1 or 2, got {}", value);
+      if (value == "1")
+        order = 1;
+      else if (value == "2")
+        order = 2;
+      else
+        error->all(FLERR, "Illegal fix etd command: order must be 1 or 2, got {}", value);
     } else if (key == "noise") {
-      if (value == "piecewise") noise = Noise::Piecewise;
-      else if (value == "exact") noise = Noise::Exact;
-      else error->all(FLERR, "Illegal fix etd command: noise must be piecewise or exact, got {}", value);
+      if (value == "piecewise")
+        noise = Noise::Piecewise;
+      else if (value == "exact")
+        noise = Noise::Exact;
+      else
+        error->all(FLERR, "Illegal fix etd command: noise must be piecewise or exact, got {}",
+                   value);
     } else if (key == "scheme") {
       // 'scheme implicit' is a different class (fix_etd_implicit.cpp); diagonal is this one
     } else if (key == "momentum") {
-      if (value == "conserve") conserve_momentum = true;
-      else if (value == "none") conserve_momentum = false;
-      else error->all(FLERR, "Illegal fix etd command: momentum must be none or conserve, got {}", value);
+      if (value == "conserve")
+        conserve_momentum = true;
+      else if (value == "none")
+        conserve_momentum = false;
+      else
+        error->all(FLERR, "Illegal fix etd command: momentum must be none or conserve, got {}",
+                   value);
     } else {
       error->all(FLERR, "Illegal fix etd command: unknown keyword {}", key);
     }
@@ -79,7 +91,10 @@ FixETDDiagonal::~FixETDDiagonal()
   memory->destroy(previous_forcing);
 }
 
-int FixETDDiagonal::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE | POST_RUN; }
+int FixETDDiagonal::setmask()
+{
+  return INITIAL_INTEGRATE | FINAL_INTEGRATE | POST_RUN;
+}
 
 void FixETDDiagonal::init()
 {
@@ -129,7 +144,10 @@ void FixETDDiagonal::set_arrays(int i)
   for (int k = 0; k < STATE; k++) previous_forcing[i][k] = 0.0;
 }
 
-void FixETDDiagonal::reset_dt() { dt = update->dt; }
+void FixETDDiagonal::reset_dt()
+{
+  dt = update->dt;
+}
 
 void FixETDDiagonal::initial_integrate(int)
 {
@@ -221,7 +239,10 @@ void FixETDDiagonal::final_integrate()
       for (int k = 0; k < 3; k++) v[i][k] -= momentum_correction[k];
 }
 
-double FixETDDiagonal::compute_vector(int n) { return momentum_correction[n]; }
+double FixETDDiagonal::compute_vector(int n)
+{
+  return momentum_correction[n];
+}
 
 /* ----------------------------------------------------------------------
    Angular velocities, where a pair style supplies the rotational friction diagonal (dpd/fpm):
@@ -244,7 +265,8 @@ void FixETDDiagonal::update_angular_velocities()
     int local = rotational.empty() ? 0 : 1;
     MPI_Allreduce(&local, &rotation_active, 1, MPI_INT, MPI_MAX, world);
     if (rotation_active && (!atom->radius_flag || !atom->rmass_flag))
-      error->all(FLERR, "Fix etd: rotating atoms need a radius and per-atom mass for their moment "
+      error->all(FLERR,
+                 "Fix etd: rotating atoms need a radius and per-atom mass for their moment "
                  "of inertia (atom_style sphere)");
     tagint local_bad = 0, bad = 0;
     if (rotation_active)
@@ -253,8 +275,10 @@ void FixETDDiagonal::update_angular_velocities()
           local_bad = MAX(local_bad, atom->tag[i]);
     MPI_Allreduce(&local_bad, &bad, 1, MPI_LMP_TAGINT, MPI_MAX, world);
     if (bad > 0)
-      error->all(FLERR, "Fix etd: atom {} has zero moment of inertia; give it a diameter (set "
-                 "... diameter) and a mass", bad);
+      error->all(FLERR,
+                 "Fix etd: atom {} has zero moment of inertia; give it a diameter (set "
+                 "... diameter) and a mass",
+                 bad);
     rotation_checked = true;
   }
   if (!rotation_active || rotational.empty()) return;
@@ -269,14 +293,18 @@ void FixETDDiagonal::update_angular_velocities()
     for (int k = 0; k < 3; k++) {
       double friction = 0.0;
       for (double **g : rotational) friction += g[i][k];
-      omega[i][k] += etd::first_order_effective_step(friction * inv_inertia, dt) * torque[i][k] * inv_inertia;
+      omega[i][k] +=
+          etd::first_order_effective_step(friction * inv_inertia, dt) * torque[i][k] * inv_inertia;
     }
   }
 }
 
 /* ---- per-atom state: A_(n-1) migrates with atoms and is written to restart files ---- */
 
-void FixETDDiagonal::grow_arrays(int nmax) { memory->grow(previous_forcing, nmax, STATE, "etd:previous_forcing"); }
+void FixETDDiagonal::grow_arrays(int nmax)
+{
+  memory->grow(previous_forcing, nmax, STATE, "etd:previous_forcing");
+}
 
 void FixETDDiagonal::copy_arrays(int i, int j, int)
 {
@@ -311,7 +339,16 @@ void FixETDDiagonal::unpack_restart(int nlocal, int nth)
   for (int k = 0; k < STATE; k++) previous_forcing[nlocal][k] = extra[nlocal][m++];
 }
 
-int FixETDDiagonal::size_restart(int) { return STATE + 1; }
-int FixETDDiagonal::maxsize_restart() { return STATE + 1; }
+int FixETDDiagonal::size_restart(int)
+{
+  return STATE + 1;
+}
+int FixETDDiagonal::maxsize_restart()
+{
+  return STATE + 1;
+}
 
-double FixETDDiagonal::memory_usage() { return static_cast<double>(atom->nmax) * STATE * sizeof(double); }
+double FixETDDiagonal::memory_usage()
+{
+  return static_cast<double>(atom->nmax) * STATE * sizeof(double);
+}

@@ -9,7 +9,9 @@
 
 #include <vector>
 
-namespace etd { class DpdPairInterface; }
+namespace etd {
+class DpdPairInterface;
+}
 
 namespace LAMMPS_NS {
 
@@ -52,7 +54,7 @@ class FixETDDiagonal : public Fix {
   bool rotation_checked = false;
   int rotation_active = 0;
   std::vector<etd::DpdPairInterface *> dpd_styles;
-  double **previous_forcing;    // [nmax][4]: A_(n-1) per component, and 1 where it is valid
+  double **previous_forcing;        // [nmax][4]: A_(n-1) per component, and 1 where it is valid
   double momentum_correction[3];    // last correction applied (output)
 };
 

@@ -16,16 +16,16 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "compute.h"
 #include "domain.h"
 #include "dpd_kernel.h"
 #include "dpd_style_lookup.h"
-#include "fpm_kernel.h"
 #include "error.h"
 #include "force.h"
+#include "fpm_kernel.h"
 #include "lammps_compat.h"
 #include "memory.h"
 #include "modify.h"
-#include "compute.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "update.h"
@@ -38,14 +38,12 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-
 FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), overdamped(false), midpoint(true), warm_start(false), tolerance(1e-6), max_iterations(200), dt(0.0),
-    list(nullptr), list_newton_off(true), dofs(3), any_fixed_partner(false), partners_built(-1),
-    partner_slots(0),
-    comm_nslots(0), comm_positions(false),
-    split_requested(false), split_rows(0), split(nullptr), last_iterations(0), last_residual(0.0),
-    iterations_sum(0.0), solves(0), predictor_steps(0)
+    Fix(lmp, narg, arg), overdamped(false), midpoint(true), warm_start(false), tolerance(1e-6),
+    max_iterations(200), dt(0.0), list(nullptr), list_newton_off(true), dofs(3),
+    any_fixed_partner(false), partners_built(-1), partner_slots(0), comm_nslots(0),
+    comm_positions(false), split_requested(false), split_rows(0), split(nullptr),
+    last_iterations(0), last_residual(0.0), iterations_sum(0.0), solves(0), predictor_steps(0)
 {
   time_integrate = 1;
   force_reneighbor = 1;    // post_integrate() may ask for an early rebuild
@@ -54,7 +52,7 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
   size_vector = 5;
   extvector = 0;
   global_freq = 1;
-  comm_forward = 9;     // positions and 3 values per atom (v), 6 with rotation (v, Omega)
+  comm_forward = 9;    // positions and 3 values per atom (v), 6 with rotation (v, Omega)
   // the dissipative and random forces are this fix's, so is their virial (pressure, stress)
   virial_global_flag = virial_peratom_flag = 1;
   thermo_virial = 1;
@@ -63,34 +61,49 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
   int iarg = 3;
   while (iarg < narg) {
     const std::string key = arg[iarg];
-    if (iarg + 2 > narg) error->all(FLERR, "Illegal fix etd command: keyword {} needs a value", key);
+    if (iarg + 2 > narg)
+      error->all(FLERR, "Illegal fix etd command: keyword {} needs a value", key);
     const std::string value = arg[iarg + 1];
     if (key == "scheme") {
       if (value != "implicit")
-        error->all(FLERR, "Illegal fix etd command: scheme must be diagonal or implicit, got {}", value);
+        error->all(FLERR, "Illegal fix etd command: scheme must be diagonal or implicit, got {}",
+                   value);
     } else if (key == "overdamped") {
-      if (value == "yes") overdamped = true;
-      else if (value == "no") overdamped = false;
-      else error->all(FLERR, "Illegal fix etd command: overdamped must be yes or no, got {}", value);
+      if (value == "yes")
+        overdamped = true;
+      else if (value == "no")
+        overdamped = false;
+      else
+        error->all(FLERR, "Illegal fix etd command: overdamped must be yes or no, got {}", value);
     } else if (key == "tol") {
       tolerance = utils::numeric(FLERR, value.c_str(), false, lmp);
       if (!(tolerance > 0.0 && tolerance < 1.0))
         error->all(FLERR, "Illegal fix etd command: tol must be between 0 and 1, got {}", value);
     } else if (key == "midpoint") {
-      if (value == "yes") midpoint = true;
-      else if (value == "no") midpoint = false;
-      else error->all(FLERR, "Illegal fix etd command: midpoint must be yes or no, got {}", value);
+      if (value == "yes")
+        midpoint = true;
+      else if (value == "no")
+        midpoint = false;
+      else
+        error->all(FLERR, "Illegal fix etd command: midpoint must be yes or no, got {}", value);
     } else if (key == "start") {
-      if (value == "velocity") warm_start = true;
-      else if (value == "jacobi") warm_start = false;
-      else error->all(FLERR, "Illegal fix etd command: start must be velocity or jacobi, got {}", value);
+      if (value == "velocity")
+        warm_start = true;
+      else if (value == "jacobi")
+        warm_start = false;
+      else
+        error->all(FLERR, "Illegal fix etd command: start must be velocity or jacobi, got {}",
+                   value);
     } else if (key == "maxiter") {
       max_iterations = utils::inumeric(FLERR, value.c_str(), false, lmp);
       if (max_iterations < 1)
-        error->all(FLERR, "Illegal fix etd command: maxiter must be a positive integer, got {}", value);
+        error->all(FLERR, "Illegal fix etd command: maxiter must be a positive integer, got {}",
+                   value);
     } else if (key == "order" || key == "noise" || key == "momentum") {
-      error->all(FLERR, "Illegal fix etd command: keyword {} belongs to scheme diagonal; the "
-                 "implicit scheme is exact in temperature and conserves momentum", key);
+      error->all(FLERR,
+                 "Illegal fix etd command: keyword {} belongs to scheme diagonal; the "
+                 "implicit scheme is exact in temperature and conserves momentum",
+                 key);
     } else {
       error->all(FLERR, "Illegal fix etd command: unknown keyword {}", key);
     }
@@ -98,7 +111,8 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
   }
 
   if (overdamped && warm_start)
-    error->all(FLERR, "Illegal fix etd command: start velocity needs overdamped no (the zero-mass "
+    error->all(FLERR,
+               "Illegal fix etd command: start velocity needs overdamped no (the zero-mass "
                "solve starts from the block-Jacobi solution)");
 
   partners.reset(new etd::PartnerExchange(world));
@@ -134,11 +148,13 @@ void FixETDImplicit::init()
   for (int f = 0; f < modify->nfix; f++) {
     Fix *other = modify->fix[f];
     if (other == this || !other->time_integrate || utils::strmatch(other->style, "^move")) continue;
-    error->all(FLERR, "Fix etd scheme implicit cannot be combined with fix {} ({}): the DPD friction "
+    error->all(FLERR,
+               "Fix etd scheme implicit cannot be combined with fix {} ({}): the DPD friction "
                "and noise of the atoms it integrates would be lost (the pair style leaves them to "
                "the implicit scheme, which holds atoms outside its group at their velocities). "
                "Integrate every DPD atom with fix etd scheme implicit, or use fix etd scheme "
-               "diagonal, whose pair forces stay complete", other->id, other->style);
+               "diagonal, whose pair forces stay complete",
+               other->id, other->style);
   }
 
   const int ntypes = atom->ntypes;
@@ -172,10 +188,12 @@ void FixETDImplicit::init()
   dofs = rotation ? 6 : 3;
   if (rotation) {
     if (!atom->omega_flag || !atom->torque_flag || !atom->radius_flag || !atom->rmass_flag)
-      error->all(FLERR, "Fix etd scheme implicit with pair style dpd/fpm needs angular velocities, "
+      error->all(FLERR,
+                 "Fix etd scheme implicit with pair style dpd/fpm needs angular velocities, "
                  "torques, radii and per-atom masses (atom_style sphere)");
     if (overdamped)
-      error->all(FLERR, "Fix etd scheme implicit: overdamped yes is not available with pair style "
+      error->all(FLERR,
+                 "Fix etd scheme implicit: overdamped yes is not available with pair style "
                  "dpd/fpm (its rotation needs inertia); use overdamped no with a small mass");
     tagint local_bad = 0, bad = 0;
     for (int i = 0; i < atom->nlocal; i++)
@@ -183,8 +201,10 @@ void FixETDImplicit::init()
         local_bad = MAX(local_bad, atom->tag[i]);
     MPI_Allreduce(&local_bad, &bad, 1, MPI_LMP_TAGINT, MPI_MAX, world);
     if (bad > 0)
-      error->all(FLERR, "Fix etd scheme implicit: atom {} has zero moment of inertia; give it a "
-                 "diameter (set ... diameter) and a mass", bad);
+      error->all(FLERR,
+                 "Fix etd scheme implicit: atom {} has zero moment of inertia; give it a "
+                 "diameter (set ... diameter) and a mass",
+                 bad);
   }
   noise = etd::PairNoise(dpd_styles.front()->noise_seed(), etd::NoiseStream::Integrator);
   // On several ranks the list is newton off, so that a pair crossing ranks is held by both
@@ -200,7 +220,10 @@ void FixETDImplicit::init()
     if (modify->compute[c]->pressatomflag) peratom_virial = true;
 }
 
-void FixETDImplicit::init_list(int, NeighList *ptr) { list = ptr; }
+void FixETDImplicit::init_list(int, NeighList *ptr)
+{
+  list = ptr;
+}
 
 void FixETDImplicit::setup(int)
 {
@@ -210,11 +233,23 @@ void FixETDImplicit::setup(int)
   for (int i = 0; i < atom->nlocal; i++)
     for (int k = 0; k < 6; k++) vatom[i][k] = 0.0;
 }
-void FixETDImplicit::setup_post_neighbor() { neighbor_safety.record_build_positions(lmp); }
-void FixETDImplicit::post_neighbor() { neighbor_safety.record_build_positions(lmp); }
-void FixETDImplicit::post_run() { neighbor_safety.end_run(lmp, id); }
+void FixETDImplicit::setup_post_neighbor()
+{
+  neighbor_safety.record_build_positions(lmp);
+}
+void FixETDImplicit::post_neighbor()
+{
+  neighbor_safety.record_build_positions(lmp);
+}
+void FixETDImplicit::post_run()
+{
+  neighbor_safety.end_run(lmp, id);
+}
 
-void FixETDImplicit::reset_dt() { dt = update->dt; }
+void FixETDImplicit::reset_dt()
+{
+  dt = update->dt;
+}
 
 /* ---------------------------------------------------------------------- */
 
@@ -255,7 +290,8 @@ void FixETDImplicit::dof_inertia(std::vector<double> &inertia) const
     const double m = rmass ? rmass[i] : mass[type[i]];
     for (int k = 0; k < 3; k++) inertia[dofs * i + k] = m;
     if (dofs == 6)
-      for (int k = 3; k < 6; k++) inertia[dofs * i + k] = 0.4 * m * atom->radius[i] * atom->radius[i];
+      for (int k = 3; k < 6; k++)
+        inertia[dofs * i + k] = 0.4 * m * atom->radius[i] * atom->radius[i];
   }
 }
 
@@ -377,7 +413,10 @@ void FixETDImplicit::find_partners()
   partners_built = neighbor->ncalls;
 }
 
-int FixETDImplicit::npartners() const { return atom->nlocal + partner_slots; }
+int FixETDImplicit::npartners() const
+{
+  return atom->nlocal + partner_slots;
+}
 
 // The velocity a periodic image has on top of its owner's under fix deform ... remap v, as
 // LAMMPS's own ghost communication adds it (AtomVec::pack_comm_vel); false where it has none.
@@ -414,7 +453,9 @@ void FixETDImplicit::build_pairs()
   fpm_offset.clear();
   const bool moving_images = domain->deform_vremap;
   image_friction.assign(moving_images ? dofs * nlocal : 0, 0.0);
-  auto keep_j = [=](int j) { return j < nlocal; };
+  auto keep_j = [=](int j) {
+    return j < nlocal;
+  };
   // j's velocity on top of its owner's (a moving image); zero for owned atoms and resting images
   double offset[3];
   auto moving_image = [&](int j) {
@@ -453,7 +494,9 @@ void FixETDImplicit::build_pairs()
         if (fc && add_fpm_pair(*fc, i, partner, d, rsq, factor, tag[i], tag[j], step)) {
           if (!i_mobile || !j_mobile) fixed_partner = 1;
           if (moving_images) {
-            if (moving_image(j)) etd::accumulate_fpm_image_offset(fpm_pairs.back(), offset, image_friction.data(), keep_j);
+            if (moving_image(j))
+              etd::accumulate_fpm_image_offset(fpm_pairs.back(), offset, image_friction.data(),
+                                               keep_j);
             fpm_offset.insert(fpm_offset.end(), offset, offset + 3);
           }
         }
@@ -478,7 +521,8 @@ void FixETDImplicit::build_pairs()
       if (!i_mobile || !j_mobile) fixed_partner = 1;
       pair_distance.push_back(r);
       if (moving_images) {
-        if (moving_image(j)) etd::accumulate_image_offset(p, offset, image_friction.data(), keep_j, dofs);
+        if (moving_image(j))
+          etd::accumulate_image_offset(p, offset, image_friction.data(), keep_j, dofs);
         pair_offset.insert(pair_offset.end(), offset, offset + 3);
       }
     }
@@ -555,7 +599,9 @@ void FixETDImplicit::gather_operand(const double *u, bool group_only)
 void FixETDImplicit::accumulate_friction(const double *u, double *gu, double scale) const
 {
   const int nlocal = atom->nlocal;
-  auto keep_j = [=](int j) { return j < nlocal; };
+  auto keep_j = [=](int j) {
+    return j < nlocal;
+  };
   if (dofs == 3)
     etd::accumulate_friction_by_runs<3>(pairs, pair_runs, u, gu, keep_j, scale);
   else
@@ -569,7 +615,9 @@ void FixETDImplicit::random_impulse(double scale, std::vector<double> &impulse)
 {
   const int nlocal = atom->nlocal;
   impulse.assign(dofs * nlocal, 0.0);
-  auto keep_j = [=](int j) { return j < nlocal; };
+  auto keep_j = [=](int j) {
+    return j < nlocal;
+  };
   etd::accumulate_noise(pairs, pair_noise, scale, impulse.data(), keep_j, dofs);
   if (dofs == 6) etd::accumulate_fpm_noise(fpm_pairs, fpm_noise, scale, impulse.data(), keep_j);
 }
@@ -579,7 +627,9 @@ void FixETDImplicit::accumulate_blocks(int block_values)
 {
   const int nlocal = atom->nlocal;
   diagonal.assign(block_values * nlocal, 0.0);
-  auto keep_j = [=](int j) { return j < nlocal; };
+  auto keep_j = [=](int j) {
+    return j < nlocal;
+  };
   etd::accumulate_blocks(pairs, diagonal.data(), keep_j, block_values);
   if (dofs == 6) etd::accumulate_fpm_blocks(fpm_pairs, diagonal.data(), keep_j);
 }
@@ -590,8 +640,8 @@ void FixETDImplicit::accumulate_blocks(int block_values)
 // outside the group held at zero (their velocities are already in rhs). With 'deflate' the
 // uniform translation (null space of G) is projected out of rhs and of the solution.
 bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double> &solution,
-                           double mass_weight, double friction_weight, bool deflate, bool singular_ok,
-                           const std::vector<double> *start,
+                           double mass_weight, double friction_weight, bool deflate,
+                           bool singular_ok, const std::vector<double> *start,
                            const std::vector<double> *start_friction)
 {
   const int *mask = atom->mask;
@@ -606,7 +656,9 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
   system.friction_weight = friction_weight;
   system.deflate = deflate;
   // atoms outside the group are held at rest (their velocities are already in rhs)
-  auto mobile = [&](int block) { return (mask[block * 3 / dofs] & groupbit) != 0; };
+  auto mobile = [&](int block) {
+    return (mask[block * 3 / dofs] & groupbit) != 0;
+  };
   auto apply_friction = [this](const double *u, double *out, double weight) {
     gather_operand(u, true);
     accumulate_friction(operand.data(), out, weight);
@@ -617,8 +669,8 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
     for (int k = 0; k < count; k++) values[k] = sums[k];
   };
   const etd::SolverResult result = etd::solve_friction_system(
-      system, mobile, apply_friction, global_sum, rhs_in.data(), solution, tolerance, max_iterations,
-      work.solve, start ? start->data() : nullptr,
+      system, mobile, apply_friction, global_sum, rhs_in.data(), solution, tolerance,
+      max_iterations, work.solve, start ? start->data() : nullptr,
       (start && start_friction) ? start_friction->data() : nullptr);
 
   last_iterations = result.iterations;
@@ -630,14 +682,16 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
   // out of the box. The overdamped step decides what to do (singular_ok).
   if (!result.converged && mass_weight == 0.0) {
     if (singular_ok) return false;
-    error->all(FLERR, "Fix etd overdamped yes: conjugate gradients did not converge ({} iterations, "
+    error->all(FLERR,
+               "Fix etd overdamped yes: conjugate gradients did not converge ({} iterations, "
                "relative residual {:.3g}): the friction system is nearly singular (an atom without "
                "DPD partners in some direction). Start from an equilibrated configuration, use a "
                "smaller timestep, or the inertial implicit scheme with a small mass",
                result.iterations, result.relative_residual);
   }
   if (!result.converged && comm->me == 0)
-    error->warning(FLERR, "Fix etd scheme implicit: conjugate gradients stopped after {} "
+    error->warning(FLERR,
+                   "Fix etd scheme implicit: conjugate gradients stopped after {} "
                    "iterations at relative residual {:.3g} (tol {:.3g}); raise maxiter or the step",
                    result.iterations, result.relative_residual, tolerance);
   return result.converged;
@@ -721,7 +775,8 @@ void FixETDImplicit::friction_noise_step()
     for (int k = 0; k < 3; k++) shift[k] = sums[DEFICIT + k] / sums[MASS];
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
-      for (int k = 0; k < dofs; k++) *dof_pointer(i, k) = solution[dofs * i + k] + (k < 3 ? shift[k] : 0.0);
+      for (int k = 0; k < dofs; k++)
+        *dof_pointer(i, k) = solution[dofs * i + k] + (k < 3 ? shift[k] : 0.0);
 
   // The end-of-step velocities that thermo sees carry the splitting's deficit
   // dt^2 <F^2> / (4 m kBT); these, fresh out of the friction step, do not (output 5).
@@ -746,7 +801,8 @@ void FixETDImplicit::friction_noise_step()
 }
 
 void FixETDImplicit::record_friction_forces(const std::vector<double> &mean_velocity,
-                                            const std::vector<double> &random_force, double random_scale)
+                                            const std::vector<double> &random_force,
+                                            double random_scale)
 {
   gather_operand(mean_velocity.data(), false);
   if (split_requested) record_split(random_force, random_scale);
@@ -760,7 +816,8 @@ bool FixETDImplicit::virial_wanted() const
   if (!thermo_virial) return false;
   for (int c = 0; c < modify->ncompute; c++) {
     Compute *compute = modify->compute[c];
-    if ((compute->pressflag || compute->pressatomflag) && compute->matchstep(update->ntimestep)) return true;
+    if ((compute->pressflag || compute->pressatomflag) && compute->matchstep(update->ntimestep))
+      return true;
   }
   return false;
 }
@@ -794,7 +851,8 @@ void FixETDImplicit::tally_friction_virial()
     const double *offset = pair_offset.empty() ? no_offset : &pair_offset[3 * n];
     const double *uj = &operand[dofs * p.j];
     const double moving_j[3] = {uj[0] + offset[0], uj[1] + offset[1], uj[2] + offset[2]};
-    const double along = -etd::pair_friction(p, &operand[dofs * p.i], moving_j) + random_scale * pair_noise[n];
+    const double along =
+        -etd::pair_friction(p, &operand[dofs * p.i], moving_j) + random_scale * pair_noise[n];
     const double r = pair_distance[n];
     const double rij[3] = {r * p.e[0], r * p.e[1], r * p.e[2]};
     const double f[3] = {along * p.e[0], along * p.e[1], along * p.e[2]};
@@ -804,7 +862,8 @@ void FixETDImplicit::tally_friction_virial()
     const etd::FpmFrictionPair &p = fpm_pairs[n];
     const double *offset = fpm_offset.empty() ? no_offset : &fpm_offset[3 * n];
     const double *qj = &operand[6 * p.j];
-    const double moving_j[6] = {qj[0] + offset[0], qj[1] + offset[1], qj[2] + offset[2], qj[3], qj[4], qj[5]};
+    const double moving_j[6] = {
+        qj[0] + offset[0], qj[1] + offset[1], qj[2] + offset[2], qj[3], qj[4], qj[5]};
     double friction[3];
     etd::fpm_pair_friction(p, &operand[6 * p.i], moving_j, 1.0, friction);
     const double r = 2.0 * p.half_r;
@@ -823,15 +882,16 @@ void FixETDImplicit::record_split(const std::vector<double> &random_force, doubl
   accumulate_friction(operand.data(), gmean.data());
   for (int i = 0; i < atom->nlocal; i++)
     for (int k = 0; k < 3; k++) {
-      split[i][k] = -gmean[dofs * i + k] - (image_friction.empty() ? 0.0 : image_friction[dofs * i + k]);
+      split[i][k] =
+          -gmean[dofs * i + k] - (image_friction.empty() ? 0.0 : image_friction[dofs * i + k]);
       split[i][3 + k] = random_scale * random_force[dofs * i + k];
     }
 }
 
 // Solves G v = F + B xi / sqrt(h) - G v_fixed at the current pair geometry, with the given
 // random impulse (translation only: init() refuses rotation here).
-bool FixETDImplicit::overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity,
-                                      bool singular_ok)
+bool FixETDImplicit::overdamped_solve(const std::vector<double> &impulse,
+                                      std::vector<double> &velocity, bool singular_ok)
 {
   double **v = atom->v;
   double **f = atom->f;
@@ -872,7 +932,8 @@ void FixETDImplicit::overdamped_step()
   const double h = dt;
 
   build_pairs();
-  std::vector<double> &impulse = work.impulse, &predicted = work.predicted, &solution = work.solution;
+  std::vector<double> &impulse = work.impulse, &predicted = work.predicted,
+                      &solution = work.solution;
   random_impulse(1.0 / std::sqrt(h), impulse);
   impulse.resize(3 * nlocal);    // owned atoms' share, kept for the corrector
   overdamped_solve(impulse, predicted, false);
@@ -916,7 +977,8 @@ void FixETDImplicit::overdamped_split(const std::vector<double> &velocity,
   std::vector<double> &mean = work.mean;
   mean.resize(3 * nlocal);
   for (int i = 0; i < nlocal; i++)
-    for (int k = 0; k < 3; k++) mean[3 * i + k] = (mask[i] & groupbit) ? velocity[3 * i + k] : atom->v[i][k];
+    for (int k = 0; k < 3; k++)
+      mean[3 * i + k] = (mask[i] & groupbit) ? velocity[3 * i + k] : atom->v[i][k];
   record_friction_forces(mean, impulse, 1.0);    // impulse = B xi / sqrt(h)
 }
 
@@ -1028,8 +1090,8 @@ int FixETDImplicit::unpack_exchange(int nlocal, double *buf)
 double FixETDImplicit::memory_usage()
 {
   return sizeof(double) * 12 * split_rows + sizeof(etd::FrictionPair) * pairs.capacity() +
-      sizeof(double) * pair_noise.capacity() +
-      sizeof(etd::FpmFrictionPair) * fpm_pairs.capacity() + sizeof(double) * fpm_noise.capacity() +
+      sizeof(double) * pair_noise.capacity() + sizeof(etd::FpmFrictionPair) * fpm_pairs.capacity() +
+      sizeof(double) * fpm_noise.capacity() +
       sizeof(double) * (operand.capacity() + diagonal.capacity()) +
       sizeof(int) * (ghost_partner.capacity() + slot_ghost.capacity());
 }

@@ -55,7 +55,7 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
 
  private:
   bool overdamped;
-  bool midpoint;    // overdamped: predictor-corrector (default) or a single solve
+  bool midpoint;      // overdamped: predictor-corrector (default) or a single solve
   bool warm_start;    // CG starts from the old velocities (else from the block-Jacobi solution)
   double tolerance;
   int max_iterations;
@@ -72,13 +72,13 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
   std::vector<etd::PairRun> pair_runs;     // its stretches of pairs with the same atom i
   std::vector<double> pair_noise;          // and each pair's sigma w_R theta
   std::vector<std::pair<tagint, tagint>> pair_tags;    // (its atom IDs, which key the noise)
-  std::vector<etd::FpmFrictionPair> fpm_pairs;    // dpd/fpm pairs of this step
-  std::vector<double> fpm_noise;                  // and their random forces (3 per pair)
-  std::vector<double> pair_distance;              // r of each DPD pair (its virial)
+  std::vector<etd::FpmFrictionPair> fpm_pairs;         // dpd/fpm pairs of this step
+  std::vector<double> fpm_noise;                       // and their random forces (3 per pair)
+  std::vector<double> pair_distance;                   // r of each DPD pair (its virial)
   // under remap v, each pair's velocity offset of j's moving image (3 per pair, zero for most)
   std::vector<double> pair_offset, fpm_offset;
   etd::NeighborSafety neighbor_safety;
-  bool any_fixed_partner;                  // some pair couples to an atom outside the group
+  bool any_fixed_partner;    // some pair couples to an atom outside the group
   // Under fix deform ... remap v: per owned atom (dofs values), G applied to the velocity
   // offsets of the moving periodic images its pairs use (friction_operator.h), this step's
   // constant part of the friction; empty without remap v
@@ -90,10 +90,10 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
   // atoms themselves, and a pair that crosses ranks is held by both, each updating its own atom,
   // so applying G needs one exchange of the slots' values and no reverse sum.
   std::unique_ptr<etd::PartnerExchange> partners;
-  bigint partners_built;               // neighbor->ncalls of the list they were found from
-  int partner_slots;                   // remote atoms
-  std::vector<int> ghost_partner;      // per ghost (index - nlocal): its partner index, or -1
-  std::vector<int> slot_ghost;         // per slot: one ghost that is an image of it
+  bigint partners_built;             // neighbor->ncalls of the list they were found from
+  int partner_slots;                 // remote atoms
+  std::vector<int> ghost_partner;    // per ghost (index - nlocal): its partner index, or -1
+  std::vector<int> slot_ghost;       // per slot: one ghost that is an image of it
   void find_partners();
   int npartners() const;    // owned atoms and slots
 
@@ -105,7 +105,8 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
   struct CommSlot {
     std::vector<double> *vector;
     int width;
-    bool image_counts = false;    // 6 values per atom that gain the periodic shift (pbc) sent with it
+    bool image_counts =
+        false;    // 6 values per atom that gain the periodic shift (pbc) sent with it
   };
   static constexpr int max_comm_slots = 3;
   CommSlot comm_slots[max_comm_slots];
@@ -159,7 +160,8 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
   void accumulate_friction(const double *u, double *gu, double scale = 1.0) const;
   void friction_noise_step();
   void overdamped_step();
-  bool overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity, bool singular_ok);
+  bool overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity,
+                        bool singular_ok);
   bool solve(const std::vector<double> &rhs, std::vector<double> &solution, double mass_weight,
              double friction_weight, bool deflate, bool singular_ok = false,
              const std::vector<double> *start = nullptr,

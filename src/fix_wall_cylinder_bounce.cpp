@@ -23,13 +23,19 @@ FixWallCylinderBounce::FixWallCylinderBounce(LAMMPS *lmp, int narg, char **arg) 
 {
   // fix ID group wall/cylinder/bounce dim c1 c2 radius [side in|out]
   if (narg < 7)
-    error->all(FLERR, "Illegal fix wall/cylinder/bounce command: expected dim c1 c2 radius "
+    error->all(FLERR,
+               "Illegal fix wall/cylinder/bounce command: expected dim c1 c2 radius "
                "[side in|out]");
   const std::string dim = arg[3];
-  if (dim == "x") axis = 0;
-  else if (dim == "y") axis = 1;
-  else if (dim == "z") axis = 2;
-  else error->all(FLERR, "Illegal fix wall/cylinder/bounce command: dim must be x, y or z, got {}", dim);
+  if (dim == "x")
+    axis = 0;
+  else if (dim == "y")
+    axis = 1;
+  else if (dim == "z")
+    axis = 2;
+  else
+    error->all(FLERR, "Illegal fix wall/cylinder/bounce command: dim must be x, y or z, got {}",
+               dim);
   centre[0] = centre[1] = centre[2] = 0.0;
   // c1 c2 are the two other coordinates in cyclic order, as for region cylinder: (y z) for an
   // x axis, (x z) for y, (x y) for z
@@ -39,7 +45,8 @@ FixWallCylinderBounce::FixWallCylinderBounce(LAMMPS *lmp, int narg, char **arg) 
   centre[second] = utils::numeric(FLERR, arg[5], false, lmp);
   radius = utils::numeric(FLERR, arg[6], false, lmp);
   if (!(radius > 0.0))
-    error->all(FLERR, "Illegal fix wall/cylinder/bounce command: radius must be > 0, got {}", arg[6]);
+    error->all(FLERR, "Illegal fix wall/cylinder/bounce command: radius must be > 0, got {}",
+               arg[6]);
 
   int iarg = 7;
   while (iarg < narg) {
@@ -48,9 +55,14 @@ FixWallCylinderBounce::FixWallCylinderBounce(LAMMPS *lmp, int narg, char **arg) 
       if (iarg + 2 > narg)
         error->all(FLERR, "Illegal fix wall/cylinder/bounce command: side needs in or out");
       const std::string value = arg[iarg + 1];
-      if (value == "in") fluid_inside = true;
-      else if (value == "out") fluid_inside = false;
-      else error->all(FLERR, "Illegal fix wall/cylinder/bounce command: side must be in or out, got {}", value);
+      if (value == "in")
+        fluid_inside = true;
+      else if (value == "out")
+        fluid_inside = false;
+      else
+        error->all(FLERR,
+                   "Illegal fix wall/cylinder/bounce command: side must be in or out, got {}",
+                   value);
       iarg += 2;
     } else {
       error->all(FLERR, "Illegal fix wall/cylinder/bounce command: unknown keyword {}", key);
@@ -63,7 +75,10 @@ FixWallCylinderBounce::FixWallCylinderBounce(LAMMPS *lmp, int narg, char **arg) 
   extvector = 1;
 }
 
-int FixWallCylinderBounce::setmask() { return POST_INTEGRATE; }
+int FixWallCylinderBounce::setmask()
+{
+  return POST_INTEGRATE;
+}
 
 void FixWallCylinderBounce::init()
 {
@@ -75,8 +90,10 @@ void FixWallCylinderBounce::init()
   const int second = (axis == 2) ? 1 : 2;
   for (int k : {first, second})
     if (domain->periodicity[k] && domain->prd[k] < 2.0 * radius)
-      error->all(FLERR, "Fix wall/cylinder/bounce: the cylinder (diameter {}) does not fit in "
-                 "the periodic box length {} across it", 2.0 * radius, domain->prd[k]);
+      error->all(FLERR,
+                 "Fix wall/cylinder/bounce: the cylinder (diameter {}) does not fit in "
+                 "the periodic box length {} across it",
+                 2.0 * radius, domain->prd[k]);
 }
 
 void FixWallCylinderBounce::post_integrate()
@@ -89,7 +106,10 @@ void FixWallCylinderBounce::post_integrate()
     if (!(mask[i] & groupbit)) continue;
     double rel[3];
     for (int k = 0; k < 3; k++) {
-      if (k == axis) { rel[k] = 0.0; continue; }
+      if (k == axis) {
+        rel[k] = 0.0;
+        continue;
+      }
       rel[k] = x[i][k] - centre[k];
       if (domain->periodicity[k]) rel[k] -= domain->prd[k] * std::round(rel[k] / domain->prd[k]);
     }

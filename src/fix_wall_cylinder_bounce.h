@@ -16,10 +16,10 @@ class FixWallCylinderBounce : public Fix {
   double compute_vector(int) override;
 
  private:
-  int axis;                // 0, 1, 2 = x, y, z
-  double centre[3];        // a point on the axis (axial component unused)
+  int axis;            // 0, 1, 2 = x, y, z
+  double centre[3];    // a point on the axis (axial component unused)
   double radius;
-  bool fluid_inside;       // side in: the group lives inside the cylinder
+  bool fluid_inside;    // side in: the group lives inside the cylinder
   double dt;
   double bounces_local, projections_local;    // since the fix was defined, this rank
 };

@@ -23,10 +23,12 @@ FixWallThermalLayer::FixWallThermalLayer(LAMMPS *lmp, int narg, char **arg) :
 {
   // fix ID group wall/thermal/layer seed face position thickness kT vx vy vz [face ...]
   if (narg < 11)
-    error->all(FLERR, "Illegal fix wall/thermal/layer command: expected seed and at least one "
+    error->all(FLERR,
+               "Illegal fix wall/thermal/layer command: expected seed and at least one "
                "face position thickness kT vx vy vz");
   const long long s = utils::inumeric(FLERR, arg[3], false, lmp);
-  if (s <= 0) error->all(FLERR, "Illegal fix wall/thermal/layer command: seed must be > 0, got {}", arg[3]);
+  if (s <= 0)
+    error->all(FLERR, "Illegal fix wall/thermal/layer command: seed must be > 0, got {}", arg[3]);
   seed = static_cast<std::uint64_t>(s);
 
   int iarg = 4;
@@ -35,26 +37,36 @@ FixWallThermalLayer::FixWallThermalLayer(LAMMPS *lmp, int narg, char **arg) :
     Face face;
     if (name.size() != 3 || (name[0] != 'x' && name[0] != 'y' && name[0] != 'z') ||
         (name.substr(1) != "lo" && name.substr(1) != "hi"))
-      error->all(FLERR, "Illegal fix wall/thermal/layer command: unknown face {} (xlo, xhi, ylo, "
-                 "yhi, zlo or zhi)", name);
+      error->all(FLERR,
+                 "Illegal fix wall/thermal/layer command: unknown face {} (xlo, xhi, ylo, "
+                 "yhi, zlo or zhi)",
+                 name);
     face.dim = name[0] - 'x';
     face.lower = name.substr(1) == "lo";
     if (iarg + 7 > narg)
-      error->all(FLERR, "Illegal fix wall/thermal/layer command: face {} needs position thickness "
-                 "kT vx vy vz", name);
+      error->all(FLERR,
+                 "Illegal fix wall/thermal/layer command: face {} needs position thickness "
+                 "kT vx vy vz",
+                 name);
     face.position = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     face.thickness = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
     face.kT = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
-    for (int k = 0; k < 3; k++) face.velocity[k] = utils::numeric(FLERR, arg[iarg + 4 + k], false, lmp);
+    for (int k = 0; k < 3; k++)
+      face.velocity[k] = utils::numeric(FLERR, arg[iarg + 4 + k], false, lmp);
     if (!(face.thickness > 0.0))
-      error->all(FLERR, "Illegal fix wall/thermal/layer command: thickness of face {} must be > 0, "
-                 "got {}", name, arg[iarg + 2]);
+      error->all(FLERR,
+                 "Illegal fix wall/thermal/layer command: thickness of face {} must be > 0, "
+                 "got {}",
+                 name, arg[iarg + 2]);
     if (!(face.kT >= 0.0))
-      error->all(FLERR, "Illegal fix wall/thermal/layer command: kT of face {} must be >= 0, got {}",
-                 name, arg[iarg + 3]);
+      error->all(FLERR,
+                 "Illegal fix wall/thermal/layer command: kT of face {} must be >= 0, got {}", name,
+                 arg[iarg + 3]);
     if (face.velocity[face.dim] != 0.0)
-      error->all(FLERR, "Illegal fix wall/thermal/layer command: the velocity of face {} must lie "
-                 "in the wall plane ({} component 0)", name, name.substr(0, 1));
+      error->all(FLERR,
+                 "Illegal fix wall/thermal/layer command: the velocity of face {} must lie "
+                 "in the wall plane ({} component 0)",
+                 name, name.substr(0, 1));
     for (const Face &other : faces)
       if (other.dim == face.dim && other.lower == face.lower)
         error->all(FLERR, "Illegal fix wall/thermal/layer command: face {} given twice", name);
@@ -69,12 +81,16 @@ FixWallThermalLayer::FixWallThermalLayer(LAMMPS *lmp, int narg, char **arg) :
   nevery = 1;
 }
 
-int FixWallThermalLayer::setmask() { return END_OF_STEP; }
+int FixWallThermalLayer::setmask()
+{
+  return END_OF_STEP;
+}
 
 void FixWallThermalLayer::init()
 {
   if (!atom->tag_enable)
-    error->all(FLERR, "Fix wall/thermal/layer requires atom IDs (its random numbers are keyed on them)");
+    error->all(FLERR,
+               "Fix wall/thermal/layer requires atom IDs (its random numbers are keyed on them)");
 }
 
 void FixWallThermalLayer::end_of_step()
@@ -118,4 +134,7 @@ void FixWallThermalLayer::end_of_step()
 
 // 0: atoms redrawn in the last step; 1: kinetic energy the redraws added since the fix was
 // defined (negative: heat taken out of the fluid by the walls)
-double FixWallThermalLayer::compute_vector(int n) { return n == 0 ? redrawn_last : energy_change; }
+double FixWallThermalLayer::compute_vector(int n)
+{
+  return n == 0 ? redrawn_last : energy_change;
+}

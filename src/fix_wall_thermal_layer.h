@@ -19,19 +19,19 @@ class FixWallThermalLayer : public Fix {
   double compute_vector(int) override;
 
   struct Face {
-    int dim;              // 0, 1, 2
-    bool lower;           // xlo/ylo/zlo: fluid above the plane
-    double position;      // the wall plane (box units)
-    double thickness;     // of the layer
-    double kT;            // wall temperature (energy units)
-    double velocity[3];   // wall velocity (in the plane)
+    int dim;               // 0, 1, 2
+    bool lower;            // xlo/ylo/zlo: fluid above the plane
+    double position;       // the wall plane (box units)
+    double thickness;      // of the layer
+    double kT;             // wall temperature (energy units)
+    double velocity[3];    // wall velocity (in the plane)
   };
 
  private:
   std::uint64_t seed;
   std::vector<Face> faces;
-  double redrawn_last;        // atoms redrawn in the last step, all ranks
-  double energy_change;       // kinetic energy added by the redraws since definition, all ranks
+  double redrawn_last;     // atoms redrawn in the last step, all ranks
+  double energy_change;    // kinetic energy added by the redraws since definition, all ranks
 };
 
 }    // namespace LAMMPS_NS

@@ -25,64 +25,65 @@
 namespace etd {
 namespace compat {
 
-// A half neighbor list with the default newton setting, as a plain pair style uses.
-template <typename Requestor>
-inline void request_half_list(LAMMPS_NS::Neighbor *neighbor, Requestor *requestor, int instance)
-{
+  // A half neighbor list with the default newton setting, as a plain pair style uses.
+  template <typename Requestor>
+  inline void request_half_list(LAMMPS_NS::Neighbor *neighbor, Requestor *requestor, int instance)
+  {
 #if ETD_LAMMPS_HAS_ADD_REQUEST
-  (void) instance;
-  neighbor->add_request(requestor);
+    (void) instance;
+    neighbor->add_request(requestor);
 #else
-  neighbor->request(requestor, instance);
+    neighbor->request(requestor, instance);
 #endif
-}
+  }
 
-// A perpetual half neighbor list for a fix: the default newton setting, or with newton_off
-// newton off whatever the setting (a pair of an owned and a ghost atom is then listed on the
-// owned atom's side by every rank that owns one of the two, and twice on one rank where the
-// ghost is an image of an atom it owns).
-inline void request_fix_half_list(LAMMPS_NS::Neighbor *neighbor, LAMMPS_NS::Fix *fix, int instance,
-                                  bool newton_off = false)
-{
+  // A perpetual half neighbor list for a fix: the default newton setting, or with newton_off
+  // newton off whatever the setting (a pair of an owned and a ghost atom is then listed on the
+  // owned atom's side by every rank that owns one of the two, and twice on one rank where the
+  // ghost is an image of an atom it owns).
+  inline void request_fix_half_list(LAMMPS_NS::Neighbor *neighbor, LAMMPS_NS::Fix *fix,
+                                    int instance, bool newton_off = false)
+  {
 #if ETD_LAMMPS_HAS_ADD_REQUEST
-  (void) instance;
-  neighbor->add_request(fix, newton_off ? LAMMPS_NS::NeighConst::REQ_NEWTON_OFF
-                                        : LAMMPS_NS::NeighConst::REQ_DEFAULT);
+    (void) instance;
+    neighbor->add_request(fix,
+                          newton_off ? LAMMPS_NS::NeighConst::REQ_NEWTON_OFF
+                                     : LAMMPS_NS::NeighConst::REQ_DEFAULT);
 #else
-  const int irequest = neighbor->request(fix, instance);
-  neighbor->requests[irequest]->pair = 0;
-  neighbor->requests[irequest]->fix = 1;
-  if (newton_off) neighbor->requests[irequest]->newton = 2;
+    const int irequest = neighbor->request(fix, instance);
+    neighbor->requests[irequest]->pair = 0;
+    neighbor->requests[irequest]->fix = 1;
+    if (newton_off) neighbor->requests[irequest]->newton = 2;
 #endif
-}
+  }
 
-// Reverse communication of a pair style's per-atom data (pack/unpack_reverse_comm).
-inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
-{
+  // Reverse communication of a pair style's per-atom data (pack/unpack_reverse_comm).
+  inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
+  {
 #if ETD_LAMMPS_HAS_GENERIC_COMM
-  comm->reverse_comm(pair);
+    comm->reverse_comm(pair);
 #else
-  comm->reverse_comm_pair(pair);
+    comm->reverse_comm_pair(pair);
 #endif
-}
+  }
 
-inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
-{
+  inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
+  {
 #if ETD_LAMMPS_HAS_GENERIC_COMM
-  comm->forward_comm(pair);
+    comm->forward_comm(pair);
 #else
-  comm->forward_comm_pair(pair);
+    comm->forward_comm_pair(pair);
 #endif
-}
+  }
 
-inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
-{
+  inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
+  {
 #if ETD_LAMMPS_HAS_GENERIC_COMM
-  comm->forward_comm(fix);
+    comm->forward_comm(fix);
 #else
-  comm->forward_comm_fix(fix);
+    comm->forward_comm_fix(fix);
 #endif
-}
+  }
 
 }    // namespace compat
 }    // namespace etd

@@ -11,8 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 #include <mpi.h>
+#include <string>
 
 using namespace LAMMPS_NS;
 
@@ -23,12 +23,15 @@ void NeighborSafety::check_settings(LAMMPS *lmp, Fix *fix, bool inertial) const
   Neighbor *neighbor = lmp->neighbor;
   // every step: checked (check yes) or rebuilt (check no)
   if (neighbor->every == 1 && neighbor->delay == 0) return;
-  const std::string settings = fmt::format("neigh_modify every {} delay {} check {}", neighbor->every,
-                                           neighbor->delay, neighbor->dist_check ? "yes" : "no");
+  const std::string settings =
+      fmt::format("neigh_modify every {} delay {} check {}", neighbor->every, neighbor->delay,
+                  neighbor->dist_check ? "yes" : "no");
   if (!inertial)
-    lmp->error->all(FLERR, "Fix {} with overdamped yes: {} leaves atoms unchecked between neighbor "
+    lmp->error->all(FLERR,
+                    "Fix {} with overdamped yes: {} leaves atoms unchecked between neighbor "
                     "list builds, and a zero-mass step has no speed to bound how far they go; use "
-                    "neigh_modify every 1 delay 0 check yes", fix->id, settings);
+                    "neigh_modify every 1 delay 0 check yes",
+                    fix->id, settings);
   double **v = lmp->atom->v;
   const int *mask = lmp->atom->mask;
   double local_max = 0.0, max_sq = 0.0;
@@ -39,9 +42,11 @@ void NeighborSafety::check_settings(LAMMPS *lmp, Fix *fix, bool inertial) const
   const double max_speed = std::sqrt(max_sq);
   const double dt = lmp->update->dt;
   if (settings_outrun_skin(neighbor->every, neighbor->delay, dt, max_speed, neighbor->skin))
-    lmp->error->all(FLERR, "Fix {}: {} lets atoms outrun the neighbor skin: the fastest atom moves "
+    lmp->error->all(FLERR,
+                    "Fix {}: {} lets atoms outrun the neighbor skin: the fastest atom moves "
                     "{:.3g} in the {} steps between checks at timestep {:.3g}, more than half the "
-                    "skin ({:.3g}); use neigh_modify every 1 delay 0 check yes", fix->id, settings,
+                    "skin ({:.3g}); use neigh_modify every 1 delay 0 check yes",
+                    fix->id, settings,
                     unchecked_steps(neighbor->every, neighbor->delay) * dt * max_speed,
                     unchecked_steps(neighbor->every, neighbor->delay), dt, 0.5 * neighbor->skin);
 }
@@ -98,27 +103,27 @@ bool NeighborSafety::could_outrun(LAMMPS *lmp, int groupbit, const std::vector<d
 }
 
 namespace {
-// MPI_Op over records of 3 doubles: {flag: max, two largest values}
-void flag_and_top_two(void *in, void *inout, int *len, MPI_Datatype *)
-{
-  const double *a = static_cast<const double *>(in);
-  double *b = static_cast<double *>(inout);
-  for (int n = 0; n + 2 < *len; n += 3) {
-    b[n] = std::max(a[n], b[n]);
-    const double values[4] = {a[n + 1], a[n + 2], b[n + 1], b[n + 2]};
-    double first = 0.0, second = 0.0;
-    for (double v : values) {
-      if (v > first) {
-        second = first;
-        first = v;
-      } else if (v > second) {
-        second = v;
+  // MPI_Op over records of 3 doubles: {flag: max, two largest values}
+  void flag_and_top_two(void *in, void *inout, int *len, MPI_Datatype *)
+  {
+    const double *a = static_cast<const double *>(in);
+    double *b = static_cast<double *>(inout);
+    for (int n = 0; n + 2 < *len; n += 3) {
+      b[n] = std::max(a[n], b[n]);
+      const double values[4] = {a[n + 1], a[n + 2], b[n + 1], b[n + 2]};
+      double first = 0.0, second = 0.0;
+      for (double v : values) {
+        if (v > first) {
+          second = first;
+          first = v;
+        } else if (v > second) {
+          second = v;
+        }
       }
+      b[n + 1] = first;
+      b[n + 2] = second;
     }
-    b[n + 1] = first;
-    b[n + 2] = second;
   }
-}
 }    // namespace
 
 void NeighborSafety::reduce_with_flag(const double local[3], double global[3], MPI_Comm comm)
@@ -139,12 +144,14 @@ void NeighborSafety::end_run(LAMMPS *lmp, const char *fix_id) const
   if ((dangerous == 0 && outruns == 0) || lmp->comm->me != 0) return;
   Neighbor *neighbor = lmp->neighbor;
   const bool every_step = neighbor->every == 1 && neighbor->delay == 0;
-  lmp->error->warning(FLERR, "Fix {}: {} dangerous neighbor list builds in this run, and {} friction "
-                      "steps at positions two atoms could have reached unlisted (their displacements "
-                      "since the list was built add up to more than the skin {}): pairs may have "
-                      "been missed. Use {}a larger skin (neighbor command) or a smaller timestep",
-                      fix_id, dangerous, outruns, neighbor->skin,
-                      every_step ? "" : "neigh_modify every 1 delay 0 check yes, ");
+  lmp->error->warning(
+      FLERR,
+      "Fix {}: {} dangerous neighbor list builds in this run, and {} friction "
+      "steps at positions two atoms could have reached unlisted (their displacements "
+      "since the list was built add up to more than the skin {}): pairs may have "
+      "been missed. Use {}a larger skin (neighbor command) or a smaller timestep",
+      fix_id, dangerous, outruns, neighbor->skin,
+      every_step ? "" : "neigh_modify every 1 delay 0 check yes, ");
 }
 
 }    // namespace etd

@@ -30,7 +30,10 @@ class LAMMPS;
 namespace etd {
 
 // The number of steps LAMMPS may go between two looks at the atoms' displacements.
-inline int unchecked_steps(int every, int delay) { return every > delay ? every : delay; }
+inline int unchecked_steps(int every, int delay)
+{
+  return every > delay ? every : delay;
+}
 
 // Whether atoms moving at most max_speed can cover half the skin within those steps.
 inline bool settings_outrun_skin(int every, int delay, double dt, double max_speed, double skin)

@@ -96,11 +96,13 @@ void PairDPDBase::settings(int narg, char **arg)
 void PairDPDBase::init_style()
 {
   if (comm->ghost_velocity == 0)
-    error->all(FLERR, "Pair style {} requires ghost atoms store velocity: use 'comm_modify vel yes'",
+    error->all(FLERR,
+               "Pair style {} requires ghost atoms store velocity: use 'comm_modify vel yes'",
                style_name);
   if (atom->tag_enable == 0)
     error->all(FLERR, "Pair style {} requires atom IDs (its noise is keyed on them)", style_name);
-  if (update->dt <= 0.0) error->all(FLERR, "Pair style {} requires a positive timestep", style_name);
+  if (update->dt <= 0.0)
+    error->all(FLERR, "Pair style {} requires a positive timestep", style_name);
   etd::compat::request_half_list(neighbor, this, instance_me);
   // requests from the package's fixes and computes are renewed by their own init(), which
   // LAMMPS calls after this one: a run without fix etd gets the full DPD force back

@@ -60,8 +60,10 @@ void PairDPDFPM::allocate()
 void PairDPDFPM::coeff(int narg, char **arg)
 {
   if (narg < 6 || narg > 7)
-    error->all(FLERR, "Incorrect args for pair_coeff dpd/fpm: expected I J a gamma_C gamma_S s "
-               "[cutoff], got {} arguments", narg);
+    error->all(FLERR,
+               "Incorrect args for pair_coeff dpd/fpm: expected I J a gamma_C gamma_S s "
+               "[cutoff], got {} arguments",
+               narg);
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
@@ -96,7 +98,8 @@ void PairDPDFPM::coeff(int narg, char **arg)
       count++;
     }
   }
-  if (count == 0) error->all(FLERR, "pair_coeff dpd/fpm: no type pairs selected by {} {}", arg[0], arg[1]);
+  if (count == 0)
+    error->all(FLERR, "pair_coeff dpd/fpm: no type pairs selected by {} {}", arg[0], arg[1]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -104,7 +107,8 @@ void PairDPDFPM::coeff(int narg, char **arg)
 void PairDPDFPM::init_style()
 {
   if (!atom->omega_flag || !atom->torque_flag)
-    error->all(FLERR, "Pair style dpd/fpm requires atoms with angular velocity and torque "
+    error->all(FLERR,
+               "Pair style dpd/fpm requires atoms with angular velocity and torque "
                "(atom_style sphere, or hybrid with sphere)");
   PairDPDBase::init_style();
 }
@@ -117,8 +121,9 @@ const etd::FpmCoefficients *PairDPDFPM::fpm_coefficients(int i, int j)
 double PairDPDFPM::init_one(int i, int j)
 {
   if (setflag[i][j] == 0)
-    error->all(FLERR, "Pair style dpd/fpm: pair coefficients for types {} {} are not set (no mixing)",
-               i, j);
+    error->all(FLERR,
+               "Pair style dpd/fpm: pair coefficients for types {} {} are not set (no mixing)", i,
+               j);
 
   const double kT = force->boltz * temperature;
   etd::FpmCoefficients c;
@@ -142,11 +147,20 @@ void PairDPDFPM::compute(int eflag, int vflag)
   const bool extras = prepare_extras();
 
   if (conservative_only) {
-    if (evflag) eval<1, 0, 0>(); else eval<0, 0, 0>();
+    if (evflag)
+      eval<1, 0, 0>();
+    else
+      eval<0, 0, 0>();
   } else if (evflag) {
-    if (extras) eval<1, 1, 1>(); else eval<1, 0, 1>();
+    if (extras)
+      eval<1, 1, 1>();
+    else
+      eval<1, 0, 1>();
   } else {
-    if (extras) eval<0, 1, 1>(); else eval<0, 0, 1>();
+    if (extras)
+      eval<0, 1, 1>();
+    else
+      eval<0, 0, 1>();
   }
 
   finish_extras(extras);
@@ -227,12 +241,20 @@ template <int EVFLAG, int EXTRAS, int DISSIPATIVE> void PairDPDFPM::eval()
           etd::fpm_pair(c, del, r, v_ij, omega_sum, pair_noise, inv_sqrt_dt, factor);
       const double fx = pr.force(0), fy = pr.force(1), fz = pr.force(2);
 
-      fi[0] += fx; fi[1] += fy; fi[2] += fz;
-      ti[0] += pr.torque[0]; ti[1] += pr.torque[1]; ti[2] += pr.torque[2];
+      fi[0] += fx;
+      fi[1] += fy;
+      fi[2] += fz;
+      ti[0] += pr.torque[0];
+      ti[1] += pr.torque[1];
+      ti[2] += pr.torque[2];
       const bool update_j = newton_pair || j < nlocal;
       if (update_j) {
-        f[j][0] -= fx; f[j][1] -= fy; f[j][2] -= fz;
-        torque[j][0] += pr.torque[0]; torque[j][1] += pr.torque[1]; torque[j][2] += pr.torque[2];
+        f[j][0] -= fx;
+        f[j][1] -= fy;
+        f[j][2] -= fz;
+        torque[j][0] += pr.torque[0];
+        torque[j][1] += pr.torque[1];
+        torque[j][2] += pr.torque[2];
       }
 
       if (EXTRAS) {
@@ -341,4 +363,3 @@ void *PairDPDFPM::extract(const char *name, int &dim)
   if (std::strcmp(name, "s") == 0) return (void *) exponent_d;
   return nullptr;
 }
-

@@ -72,8 +72,10 @@ void PairDPDGen::allocate()
 void PairDPDGen::coeff(int narg, char **arg)
 {
   if (narg < 5)
-    error->all(FLERR, "Incorrect args for pair_coeff dpd/gen: expected I J a gamma s [cutoff] "
-               "[cut_d rcD] [exp_c p], got {} arguments", narg);
+    error->all(FLERR,
+               "Incorrect args for pair_coeff dpd/gen: expected I J a gamma s [cutoff] "
+               "[cut_d rcD] [exp_c p], got {} arguments",
+               narg);
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
@@ -93,7 +95,8 @@ void PairDPDGen::coeff(int narg, char **arg)
   int iarg = 5;
   if (iarg < narg && !is_keyword(arg[iarg])) {
     cut_one = utils::numeric(FLERR, arg[iarg], false, lmp);
-    if (cut_one <= 0.0) error->all(FLERR, "pair_coeff dpd/gen: cutoff must be > 0, got {}", arg[iarg]);
+    if (cut_one <= 0.0)
+      error->all(FLERR, "pair_coeff dpd/gen: cutoff must be > 0, got {}", arg[iarg]);
     iarg++;
   }
   while (iarg < narg) {
@@ -129,7 +132,8 @@ void PairDPDGen::coeff(int narg, char **arg)
       count++;
     }
   }
-  if (count == 0) error->all(FLERR, "pair_coeff dpd/gen: no type pairs selected by {} {}", arg[0], arg[1]);
+  if (count == 0)
+    error->all(FLERR, "pair_coeff dpd/gen: no type pairs selected by {} {}", arg[0], arg[1]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -172,14 +176,30 @@ void PairDPDGen::compute(int eflag, int vflag)
   // the extras are template flags so that the plain force loop carries none of their work
   if (conservative_only) {
     if (evflag) {
-      if (want_split) eval<1, 0, 1, 0>(); else eval<1, 0, 0, 0>();
+      if (want_split)
+        eval<1, 0, 1, 0>();
+      else
+        eval<1, 0, 0, 0>();
     } else {
-      if (want_split) eval<0, 0, 1, 0>(); else eval<0, 0, 0, 0>();
+      if (want_split)
+        eval<0, 0, 1, 0>();
+      else
+        eval<0, 0, 0, 0>();
     }
   } else if (evflag) {
-    if (want_split) eval<1, 1, 1, 1>(); else if (want_friction) eval<1, 1, 0, 1>(); else eval<1, 0, 0, 1>();
+    if (want_split)
+      eval<1, 1, 1, 1>();
+    else if (want_friction)
+      eval<1, 1, 0, 1>();
+    else
+      eval<1, 0, 0, 1>();
   } else {
-    if (want_split) eval<0, 1, 1, 1>(); else if (want_friction) eval<0, 1, 0, 1>(); else eval<0, 0, 0, 1>();
+    if (want_split)
+      eval<0, 1, 1, 1>();
+    else if (want_friction)
+      eval<0, 1, 0, 1>();
+    else
+      eval<0, 0, 0, 1>();
   }
 
   finish_extras(extras);
@@ -234,7 +254,8 @@ template <int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE> void PairDPDGen:
 
       const double e_dot_v =
           (delx * (vxi - v[j][0]) + dely * (vyi - v[j][1]) + delz * (vzi - v[j][2])) * rinv;
-      const double theta = (DISSIPATIVE && rsq < c.rcsq_d) ? noise.gaussian(tag_i, tag[j], step) : 0.0;
+      const double theta = (DISSIPATIVE && rsq < c.rcsq_d) ? noise.gaussian(tag_i, tag[j], step)
+                                                           : 0.0;
       etd::PairForce pf = etd::pair_force(c, rsq, r, e_dot_v, theta, inv_sqrt_dt, factor);
       if (!DISSIPATIVE) pf.dissipative = pf.random = pf.friction = 0.0;
       const double fpair = pf.total() * rinv;
@@ -255,8 +276,14 @@ template <int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE> void PairDPDGen:
           const double friction_per_rsq = pf.friction * rinv * rinv;
           const double gx = friction_per_rsq * delx * delx, gy = friction_per_rsq * dely * dely,
                        gz = friction_per_rsq * delz * delz;
-          gxi += gx; gyi += gy; gzi += gz;
-          if (update_j) { friction[j][0] += gx; friction[j][1] += gy; friction[j][2] += gz; }
+          gxi += gx;
+          gyi += gy;
+          gzi += gz;
+          if (update_j) {
+            friction[j][0] += gx;
+            friction[j][1] += gy;
+            friction[j][2] += gz;
+          }
         }
         if (SPLIT) {
           const double parts[3] = {pf.conservative, pf.dissipative, pf.random};
@@ -295,8 +322,8 @@ template <int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE> void PairDPDGen:
 
 void PairDPDGen::write_type_pair(FILE *fp, int i, int j)
 {
-  const double values[NCOEFF] = {a0[i][j], gamma[i][j], exponent_d[i][j], exponent_c[i][j],
-                                 cut[i][j], cut_d[i][j]};
+  const double values[NCOEFF] = {a0[i][j],         gamma[i][j], exponent_d[i][j],
+                                 exponent_c[i][j], cut[i][j],   cut_d[i][j]};
   fwrite(values, sizeof(double), NCOEFF, fp);
   fwrite(&cut_d_set[i][j], sizeof(int), 1, fp);
 }
@@ -360,4 +387,3 @@ void *PairDPDGen::extract(const char *name, int &dim)
   if (std::strcmp(name, "cut_d") == 0) return (void *) cut_d;
   return nullptr;
 }
-

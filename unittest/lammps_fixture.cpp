@@ -24,7 +24,10 @@ Lammps::Lammps(MPI_Comm comm_, bool load_plugin) : comm(comm_)
   if (load_plugin) cmd(std::string("plugin load ") + ETD_PLUGIN_PATH);
 }
 
-Lammps::~Lammps() { delete lmp; }
+Lammps::~Lammps()
+{
+  delete lmp;
+}
 
 void Lammps::cmd(const std::string &line)
 {
@@ -83,7 +86,10 @@ std::vector<double> Lammps::gather_compute(const std::string &id, int columns)
   return global;
 }
 
-double Lammps::thermo(const std::string &keyword) { return lammps_get_thermo(lmp, keyword.c_str()); }
+double Lammps::thermo(const std::string &keyword)
+{
+  return lammps_get_thermo(lmp, keyword.c_str());
+}
 
 double Lammps::compute_scalar(const std::string &id)
 {
@@ -111,7 +117,10 @@ double Lammps::fix_scalar(const std::string &id)
   return result;
 }
 
-long Lammps::natoms() { return static_cast<long>(lammps_get_natoms(lmp)); }
+long Lammps::natoms()
+{
+  return static_cast<long>(lammps_get_natoms(lmp));
+}
 
 void write_random_data(const std::string &path, int natoms, double L, unsigned seed, int ntypes,
                        double vmax)
@@ -148,8 +157,10 @@ void write_random_sphere_data(const std::string &path, int natoms, double L, uns
     const double density = 6.0 / (3.14159265358979323846 * diameter * diameter * diameter);
     std::FILE *fp = std::fopen(path.c_str(), "w");
     if (!fp) throw std::runtime_error("cannot write " + path);
-    std::fprintf(fp, "ETD-DPD test configuration (spheres)\n\n%d atoms\n%d atom types\n\n", natoms, ntypes);
-    std::fprintf(fp, "0 %.17g xlo xhi\n0 %.17g ylo yhi\n0 %.17g zlo zhi\n\nAtoms # sphere\n\n", L, L, L);
+    std::fprintf(fp, "ETD-DPD test configuration (spheres)\n\n%d atoms\n%d atom types\n\n", natoms,
+                 ntypes);
+    std::fprintf(fp, "0 %.17g xlo xhi\n0 %.17g ylo yhi\n0 %.17g zlo zhi\n\nAtoms # sphere\n\n", L,
+                 L, L);
     for (int i = 1; i <= natoms; i++) {
       const double x = pos(gen), y = pos(gen), z = pos(gen);
       std::fprintf(fp, "%d %d %.17g %.17g %.17g %.17g %.17g\n", i, 1 + (i - 1) % ntypes, diameter,
@@ -166,7 +177,10 @@ void write_random_sphere_data(const std::string &path, int natoms, double L, uns
   MPI_Barrier(MPI_COMM_WORLD);
 }
 
-std::string work_file(const std::string &name) { return std::string(ETD_TEST_WORKDIR) + "/" + name; }
+std::string work_file(const std::string &name)
+{
+  return std::string(ETD_TEST_WORKDIR) + "/" + name;
+}
 
 int world_rank()
 {

@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
-namespace LAMMPS_NS { class LAMMPS; }
+namespace LAMMPS_NS {
+class LAMMPS;
+}
 
 namespace etdtest {
 
@@ -20,7 +22,7 @@ class Lammps {
   Lammps(const Lammps &) = delete;
   Lammps &operator=(const Lammps &) = delete;
 
-  void cmd(const std::string &line);                   // throws std::runtime_error on ERROR
+  void cmd(const std::string &line);    // throws std::runtime_error on ERROR
   void cmds(const std::vector<std::string> &lines);
   // Runs the command and returns the LAMMPS error message ("" if it succeeded).
   std::string error_of(const std::string &line);
@@ -51,8 +53,8 @@ struct BadInput {
 void expect_errors(const std::vector<BadInput> &cases, const std::function<void(Lammps &)> &setup);
 
 // A data file with n atoms at random positions in a cube of side L (deterministic).
-void write_random_data(const std::string &path, int natoms, double L, unsigned seed,
-                       int ntypes = 1, double vmax = 0.0);
+void write_random_data(const std::string &path, int natoms, double L, unsigned seed, int ntypes = 1,
+                       double vmax = 0.0);
 // The same for atom_style sphere: diameter d, mass 1 (density 6/(pi d^3)), random velocities
 // in [-vmax, vmax] and angular velocities in [-wmax, wmax].
 void write_random_sphere_data(const std::string &path, int natoms, double L, unsigned seed,

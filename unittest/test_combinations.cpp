@@ -18,7 +18,10 @@ struct Scheme {
   bool sphere;    // dpd/fpm: atom_style sphere, angular velocities
 };
 
-bool diagonal(const Scheme &s) { return s.fix.find("implicit") == std::string::npos; }
+bool diagonal(const Scheme &s)
+{
+  return s.fix.find("implicit") == std::string::npos;
+}
 
 const std::vector<Scheme> SCHEMES = {
     {"diagonal", "etd", false},
@@ -41,10 +44,12 @@ std::vector<std::string> system(const Scheme &s, const std::string &before_read 
   if (!before_read.empty()) c.push_back(before_read);
   c.push_back("read_data " + (s.sphere ? SPHERE_DATA : DATA));
   if (s.sphere) {
-    c.insert(c.end(), {"set group all mass 0.01", "pair_style dpd/fpm 1.0 1.0 77",
-                       "pair_coeff * * 25 4.5 4.5 0.5"});
+    c.insert(c.end(),
+             {"set group all mass 0.01", "pair_style dpd/fpm 1.0 1.0 77",
+              "pair_coeff * * 25 4.5 4.5 0.5"});
   } else {
-    c.insert(c.end(), {"mass * 0.01", "pair_style dpd/gen 1.0 1.0 77", "pair_coeff * * 25 4.5 0.5"});
+    c.insert(c.end(),
+             {"mass * 0.01", "pair_style dpd/gen 1.0 1.0 77", "pair_coeff * * 25 4.5 0.5"});
   }
   const double dt = diagonal(s) ? 0.0002 : (s.name == "overdamped" ? 0.0005 : 0.001);
   c.push_back("timestep " + std::to_string(dt));
@@ -69,7 +74,8 @@ std::vector<double> state(Lammps &l, bool sphere)
 // Largest difference relative to the largest magnitude of the reference, positions (the first
 // 3N values, N = atoms) by their nearest periodic image: runs that rebuild their neighbor lists
 // at other steps wrap atoms into the box at other steps.
-double relative_difference(const std::vector<double> &a, const std::vector<double> &b, double box = 6.0)
+double relative_difference(const std::vector<double> &a, const std::vector<double> &b,
+                           double box = 6.0)
 {
   if (a.size() != b.size()) return 1e300;
   const size_t positions = 3 * (static_cast<size_t>(std::lround(etdtest_natoms)));
@@ -85,7 +91,8 @@ double relative_difference(const std::vector<double> &a, const std::vector<doubl
 
 // The same 20 steps with and without the given commands; 'middle' runs between two halves
 std::vector<double> twenty_steps(const Scheme &s, const std::vector<std::string> &before,
-                                 const std::vector<std::string> &middle, const std::string &before_read = "")
+                                 const std::vector<std::string> &middle,
+                                 const std::string &before_read = "")
 {
   Lammps l;
   l.cmds(system(s, before_read));
@@ -99,7 +106,10 @@ std::vector<double> twenty_steps(const Scheme &s, const std::vector<std::string>
 // Summation orders differ (neighbor order, decomposition); the implicit schemes agree to their
 // solver tolerance (1e-10 here; the zero-mass scheme's nearly singular G amplifies it to about
 // 1e-5 of its velocities), the diagonal one to round-off.
-double agree(const Scheme &s) { return s.name == "overdamped" ? 1e-4 : 1e-7; }
+double agree(const Scheme &s)
+{
+  return s.name == "overdamped" ? 1e-4 : 1e-7;
+}
 
 class Combinations : public ::testing::Test {
  protected:
@@ -196,7 +206,8 @@ TEST_F(Combinations, CommCutoffAndNeighborExclusionsKeepTheTrajectory)
     const std::string zero_pair = s.sphere ? "pair_coeff 1 2 0 0 0 0.5" : "pair_coeff 1 2 0 0 0.5";
     const auto excluded = twenty_steps(s, {"neigh_modify exclude type 1 2"}, {});
     const auto zeroed = twenty_steps(s, {zero_pair}, {});
-    EXPECT_LT(relative_difference(excluded, zeroed), agree(s)) << s.name << ": neigh_modify exclude";
+    EXPECT_LT(relative_difference(excluded, zeroed), agree(s))
+        << s.name << ": neigh_modify exclude";
   }
 }
 
@@ -208,18 +219,20 @@ TEST_F(Combinations, VelocityChangesAndAtomsCreatedOrDeletedBetweenRuns)
   for (const Scheme &s : SCHEMES) {
     Lammps l;
     l.cmds(system(s));
-    l.cmds({"velocity all create 1.0 4 mom yes dist gaussian", "fix 1 all " + s.fix, "run 50 post no",
-            "velocity all set 0.0 0.0 0.0", "run 50 post no", "group gone id 1:648:10", "delete_atoms group gone",
-            "create_atoms 1 random 40 19 NULL", s.sphere ? "set type 1 mass 0.01" : "mass * 0.01",
-            "velocity all zero linear", "compute mobile all temp",
-            "fix average all ave/time 1 1 1 c_mobile ave running", "run 300 post no"});
+    l.cmds({"velocity all create 1.0 4 mom yes dist gaussian", "fix 1 all " + s.fix,
+            "run 50 post no", "velocity all set 0.0 0.0 0.0", "run 50 post no",
+            "group gone id 1:648:10", "delete_atoms group gone", "create_atoms 1 random 40 19 NULL",
+            s.sphere ? "set type 1 mass 0.01" : "mass * 0.01", "velocity all zero linear",
+            "compute mobile all temp", "fix average all ave/time 1 1 1 c_mobile ave running",
+            "run 300 post no"});
     const double kt = l.fix_scalar("average");
     const auto v = l.gather("v");
     double p[3] = {0.0, 0.0, 0.0};
     for (size_t a = 0; a < v.size() / 3; a++)
       for (int k = 0; k < 3; k++) p[k] += 0.01 * v[3 * a + k];    // (every atom's mass)
-    std::printf("%s after velocity set, delete and create: kBT %.4f (running mean), momentum %.1e\n",
-                s.name.c_str(), kt, std::fabs(p[0]) + std::fabs(p[1]) + std::fabs(p[2]));
+    std::printf(
+        "%s after velocity set, delete and create: kBT %.4f (running mean), momentum %.1e\n",
+        s.name.c_str(), kt, std::fabs(p[0]) + std::fabs(p[1]) + std::fabs(p[2]));
     EXPECT_TRUE(std::isfinite(kt)) << s.name;
     if (!diagonal(s))    // exact momentum: the implicit schemes
       for (double pk : p) EXPECT_LT(std::fabs(pk), 1e-11) << s.name;
@@ -235,15 +248,17 @@ TEST_F(Combinations, SubgroupWithAnotherIntegratorOnTheRest)
   for (const Scheme &s : SCHEMES) {
     Lammps l;
     l.cmds(system(s));
-    l.cmds({"group etd type 1", "group rest type 2", "velocity all create 1.0 4 mom yes dist gaussian",
-            "fix 1 etd " + s.fix, s.sphere ? "fix 2 rest nve/sphere" : "fix 2 rest nve"});
+    l.cmds({"group etd type 1", "group rest type 2",
+            "velocity all create 1.0 4 mom yes dist gaussian", "fix 1 etd " + s.fix,
+            s.sphere ? "fix 2 rest nve/sphere" : "fix 2 rest nve"});
     if (!diagonal(s)) {
       const std::string message = l.error_of("run 1 post no");
-      EXPECT_NE(message.find("cannot be combined with fix 2"), std::string::npos) << s.name << ": " << message;
+      EXPECT_NE(message.find("cannot be combined with fix 2"), std::string::npos)
+          << s.name << ": " << message;
       continue;
     }
-    l.cmds({"compute t1 etd temp", "compute t2 rest temp", "fix average all ave/time 1 1 1 c_t1 c_t2 ave running",
-            "run 1500 post no"});
+    l.cmds({"compute t1 etd temp", "compute t2 rest temp",
+            "fix average all ave/time 1 1 1 c_t1 c_t2 ave running", "run 1500 post no"});
     std::printf("diagonal on type 1, nve on type 2: kBT %.4f / %.4f\n", l.fix_vector("average", 0),
                 l.fix_vector("average", 1));
     EXPECT_NEAR(l.fix_vector("average", 0), 1.0, 0.1);
@@ -258,15 +273,18 @@ TEST_F(Combinations, RigidColloidInEtdSolvent)
     if (s.sphere) continue;    // (the same check as dpd/gen)
     Lammps l;
     l.cmds(system(s));
-    l.cmds({"region ball sphere 3 3 3 1.0", "group colloid region ball", "group solvent subtract all colloid",
-            "velocity all create 1.0 4 mom yes dist gaussian", "fix 1 solvent " + s.fix,
-            "variable body atom 1", "fix 2 colloid rigid/small custom v_body"});
+    l.cmds({"region ball sphere 3 3 3 1.0", "group colloid region ball",
+            "group solvent subtract all colloid", "velocity all create 1.0 4 mom yes dist gaussian",
+            "fix 1 solvent " + s.fix, "variable body atom 1",
+            "fix 2 colloid rigid/small custom v_body"});
     if (!diagonal(s)) {
       const std::string message = l.error_of("run 1 post no");
-      EXPECT_NE(message.find("cannot be combined with fix 2 (rigid/small)"), std::string::npos) << s.name << ": " << message;
+      EXPECT_NE(message.find("cannot be combined with fix 2 (rigid/small)"), std::string::npos)
+          << s.name << ": " << message;
       continue;
     }
-    l.cmds({"compute t1 solvent temp", "fix average all ave/time 1 1 1 c_t1 ave running", "run 1000 post no"});
+    l.cmds({"compute t1 solvent temp", "fix average all ave/time 1 1 1 c_t1 ave running",
+            "run 1000 post no"});
     EXPECT_NEAR(l.fix_scalar("average"), 1.0, 0.1);
   }
 }
@@ -281,19 +299,24 @@ TEST_F(Combinations, GreenKuboStressIncludesTheFrictionAndNoise)
     Lammps l;
     l.cmds(system(s));
     l.cmds({"velocity all create 1.0 4 mom yes dist gaussian", "fix 1 all " + s.fix,
-            "compute p all pressure thermo_temp", "compute pfix all pressure NULL fix", "run 0 post no"});
+            "compute p all pressure thermo_temp", "compute pfix all pressure NULL fix",
+            "run 0 post no"});
     // before any friction step the fix has no virial (it once read uninitialised memory here)
-    for (int k = 0; k < 6; k++) EXPECT_EQ(l.compute_vector("pfix", k), 0.0) << s.name << " at set-up";
+    for (int k = 0; k < 6; k++)
+      EXPECT_EQ(l.compute_vector("pfix", k), 0.0) << s.name << " at set-up";
     l.cmds({"variable pxy equal c_p[4]", "variable fxy equal c_pfix[4]",
             "fix gk all ave/correlate 1 20 20 v_pxy type auto ave running",
             "variable fxy2 equal v_fxy^2", "fix spread all ave/time 1 1 1 v_fxy2 ave running",
             "run 100 post no"});
     const double fix_share = l.fix_scalar("spread");
-    l.cmds({"variable acf0 equal f_gk[1][3]", "fix acf all ave/time 20 1 20 v_acf0", "run 20 post no"});
+    l.cmds({"variable acf0 equal f_gk[1][3]", "fix acf all ave/time 20 1 20 v_acf0",
+            "run 20 post no"});
     const double acf0 = l.fix_scalar("acf");    // <Pxy(0)^2>
     EXPECT_TRUE(std::isfinite(acf0) && acf0 > 0.0) << s.name << ": " << acf0;
-    if (diagonal(s)) EXPECT_EQ(fix_share, 0.0) << s.name;
-    else EXPECT_GT(fix_share, 0.0) << s.name;
+    if (diagonal(s))
+      EXPECT_EQ(fix_share, 0.0) << s.name;
+    else
+      EXPECT_GT(fix_share, 0.0) << s.name;
   }
 }
 
@@ -306,13 +329,16 @@ TEST_F(Combinations, StressPerAtomAddsUpToTheFixVirial)
     if (diagonal(s)) continue;    // (no fix virial: the pair style's forces)
     Lammps l;
     l.cmds(system(s));
-    l.cmds({"velocity all create 1.0 4 mom yes dist gaussian", "fix 1 all " + s.fix,
-            "compute pfix all pressure NULL fix", "compute sfix all stress/atom NULL fix",
-            "compute ssum all reduce sum c_sfix[1] c_sfix[2] c_sfix[3] c_sfix[4] c_sfix[5] c_sfix[6]",
-            "variable check equal c_pfix[4]+c_ssum[4]/vol", "thermo_style custom step c_pfix[1] c_pfix[4] c_ssum[1] c_ssum[4]",
-            "thermo 5", "run 5 post no"});
+    l.cmds(
+        {"velocity all create 1.0 4 mom yes dist gaussian", "fix 1 all " + s.fix,
+         "compute pfix all pressure NULL fix", "compute sfix all stress/atom NULL fix",
+         "compute ssum all reduce sum c_sfix[1] c_sfix[2] c_sfix[3] c_sfix[4] c_sfix[5] c_sfix[6]",
+         "variable check equal c_pfix[4]+c_ssum[4]/vol",
+         "thermo_style custom step c_pfix[1] c_pfix[4] c_ssum[1] c_ssum[4]", "thermo 5",
+         "run 5 post no"});
     for (int k = 0; k < 6; k++) {
-      const double global = l.compute_vector("pfix", k), summed = -l.compute_vector("ssum", k) / 216.0;
+      const double global = l.compute_vector("pfix", k),
+                   summed = -l.compute_vector("ssum", k) / 216.0;
       EXPECT_NEAR(summed, global, 1e-9 * (1.0 + std::fabs(global))) << s.name << " component " << k;
       if (k == 0) EXPECT_NE(global, 0.0) << s.name;
     }

@@ -88,10 +88,10 @@ TEST(DpdDesign, VariablesWorkInPairCoeff)
 {
   Lammps l;
   l.cmds({"dpd/design fluid eta 30 sc 500" + FLUID, "units lj", "atom_modify map array",
-          "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "region box block 0 6 0 6 0 6", "create_box 1 box",
-          "create_atoms 1 single 2.0 3.0 3.0", "create_atoms 1 single 2.6 3.0 3.0",
-          "mass 1 1.0", "velocity all set 0.5 0 0", "group right id 2",
-          "velocity right set -0.5 0 0", "pair_style dpd/gen 0.0 1.5 1234",
+          "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
+          "region box block 0 6 0 6 0 6", "create_box 1 box", "create_atoms 1 single 2.0 3.0 3.0",
+          "create_atoms 1 single 2.6 3.0 3.0", "mass 1 1.0", "velocity all set 0.5 0 0",
+          "group right id 2", "velocity right set -0.5 0 0", "pair_style dpd/gen 0.0 1.5 1234",
           "pair_coeff 1 1 3.5328 ${fluid_gamma} ${fluid_s}", "run 0 post no"});
   const std::vector<double> f = l.gather("f");
   const double s = variable(l, "fluid_s"), gamma = variable(l, "fluid_gamma");
@@ -132,35 +132,43 @@ TEST(DpdDesign, ImpossibleFluidStopsWithTheBound)
 
 TEST(DpdDesign, BadInputErrors)
 {
-  etdtest::expect_errors({
-      {{"dpd/design"}, "Illegal dpd/design command: expected 'dpd/design name"},
-      {{"dpd/design my-fluid eta 30 sc 500" + FLUID}, "name 'my-fluid' must contain only"},
-      {{"dpd/design 30 sc 500" + FLUID}, "the first argument is the name"},
-      {{"dpd/design f eta 30 schmidt 500" + FLUID}, "unknown keyword 'schmidt'"},
-      {{"dpd/design f eta 30 eta 31 sc 500" + FLUID}, "keyword 'eta' given twice"},
-      {{"dpd/design f sc 500" + FLUID + " eta"}, "keyword 'eta' needs a value"},
-      {{"dpd/design f eta thirty sc 500" + FLUID}, "eta (viscosity) must be a number, got 'thirty'"},
-      {{"dpd/design f eta 0 sc 500" + FLUID}, "eta (viscosity) must be a finite number > 0, got 0"},
-      {{"dpd/design f eta -30 sc 500" + FLUID}, "eta (viscosity) must be a finite number > 0"},
-      {{"dpd/design f eta 1e400 sc 500" + FLUID}, "eta (viscosity) must be a finite number > 0"},
-      {{"dpd/design f eta 30 sc -5" + FLUID}, "sc (Schmidt number) must be a finite number > 0"},
-      {{"dpd/design f eta 30 taup 0" + FLUID}, "taup (particle diffusion time) must be a finite"},
-      {{"dpd/design f eta 30 sc 500 density 0 mass 1 temp 1 cutoff 1.5"},
-       "density (number density) must be a finite number > 0"},
-      {{"dpd/design f eta 30 sc 500 density 4 mass x temp 1 cutoff 1.5"},
-       "mass (particle mass) must be a number"},
-      {{"dpd/design f eta 30 sc 500 density 4 mass 1 temp -1 cutoff 1.5"},
-       "temp (temperature kBT) must be a finite number > 0"},
-      {{"dpd/design f eta 30 sc 500 density 4 mass 1 temp 1 cutoff 0"},
-       "cutoff (cutoff) must be a finite number > 0"},
-      {{"dpd/design f eta 30 sc 500 taup 1" + FLUID}, "give either sc or taup, not both"},
-      {{"dpd/design f eta 30" + FLUID}, "missing keyword sc or taup"},
-      {{"dpd/design f sc 500" + FLUID}, "missing keyword eta (viscosity)"},
-      {{"dpd/design f eta 30 sc 500 mass 1 temp 1 cutoff 1.5"}, "missing keyword density"},
-      {{"dpd/design f eta 30 sc 500 density 4 temp 1 cutoff 1.5"}, "missing keyword mass"},
-      {{"dpd/design f eta 30 sc 500 density 4 mass 1 cutoff 1.5"}, "missing keyword temp"},
-      {{"dpd/design f eta 30 sc 500 density 4 mass 1 temp 1"}, "missing keyword cutoff"},
-  }, [](Lammps &) {});
+  etdtest::expect_errors(
+      {
+          {{"dpd/design"}, "Illegal dpd/design command: expected 'dpd/design name"},
+          {{"dpd/design my-fluid eta 30 sc 500" + FLUID}, "name 'my-fluid' must contain only"},
+          {{"dpd/design 30 sc 500" + FLUID}, "the first argument is the name"},
+          {{"dpd/design f eta 30 schmidt 500" + FLUID}, "unknown keyword 'schmidt'"},
+          {{"dpd/design f eta 30 eta 31 sc 500" + FLUID}, "keyword 'eta' given twice"},
+          {{"dpd/design f sc 500" + FLUID + " eta"}, "keyword 'eta' needs a value"},
+          {{"dpd/design f eta thirty sc 500" + FLUID},
+           "eta (viscosity) must be a number, got 'thirty'"},
+          {{"dpd/design f eta 0 sc 500" + FLUID},
+           "eta (viscosity) must be a finite number > 0, got 0"},
+          {{"dpd/design f eta -30 sc 500" + FLUID}, "eta (viscosity) must be a finite number > 0"},
+          {{"dpd/design f eta 1e400 sc 500" + FLUID},
+           "eta (viscosity) must be a finite number > 0"},
+          {{"dpd/design f eta 30 sc -5" + FLUID},
+           "sc (Schmidt number) must be a finite number > 0"},
+          {{"dpd/design f eta 30 taup 0" + FLUID},
+           "taup (particle diffusion time) must be a finite"},
+          {{"dpd/design f eta 30 sc 500 density 0 mass 1 temp 1 cutoff 1.5"},
+           "density (number density) must be a finite number > 0"},
+          {{"dpd/design f eta 30 sc 500 density 4 mass x temp 1 cutoff 1.5"},
+           "mass (particle mass) must be a number"},
+          {{"dpd/design f eta 30 sc 500 density 4 mass 1 temp -1 cutoff 1.5"},
+           "temp (temperature kBT) must be a finite number > 0"},
+          {{"dpd/design f eta 30 sc 500 density 4 mass 1 temp 1 cutoff 0"},
+           "cutoff (cutoff) must be a finite number > 0"},
+          {{"dpd/design f eta 30 sc 500 taup 1" + FLUID}, "give either sc or taup, not both"},
+          {{"dpd/design f eta 30" + FLUID}, "missing keyword sc or taup"},
+          {{"dpd/design f sc 500" + FLUID}, "missing keyword eta (viscosity)"},
+          {{"dpd/design f eta 30 sc 500 mass 1 temp 1 cutoff 1.5"}, "missing keyword density"},
+          {{"dpd/design f eta 30 sc 500 density 4 temp 1 cutoff 1.5"}, "missing keyword mass"},
+          {{"dpd/design f eta 30 sc 500 density 4 mass 1 cutoff 1.5"}, "missing keyword temp"},
+          {{"dpd/design f eta 30 sc 500 density 4 mass 1 temp 1"}, "missing keyword cutoff"},
+      },
+      [](Lammps &) {
+      });
   // a variable of another style under the same name is refused by LAMMPS itself (in its own
   // words, which differ between versions: only the refusal is checked)
   Lammps l;

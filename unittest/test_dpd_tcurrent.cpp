@@ -44,9 +44,9 @@ void sinusoidal_field(Lammps &l, double lo)
               " units box",
           "create_box 1 box", "create_atoms 1 box", "mass 1 1.0",
           "variable vy atom 0.7*cos(2*PI*(x-" + los + ")/6)",
-          "variable vz atom -0.3*sin(2*PI*2*(x-" + los + ")/6)",
-          "velocity all set 0 v_vy v_vz", "compute J all dpd/tcurrent " + std::to_string(K),
-          "thermo_style custom step c_J[1]", "run 0 post no"});
+          "variable vz atom -0.3*sin(2*PI*2*(x-" + los + ")/6)", "velocity all set 0 v_vy v_vz",
+          "compute J all dpd/tcurrent " + std::to_string(K), "thermo_style custom step c_J[1]",
+          "run 0 post no"});
 }
 
 // the direct sum of the definition, J_t(k) = sum v_t exp(i k x), over gathered atoms
@@ -139,9 +139,10 @@ TEST(TCurrent, MatchesDirectSumOnAnyRankCount)
   for (int ranks : {1, 2, 4}) {
     if (ranks > etdtest::world_size()) break;
     results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
-      l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + DATA,
-              "mass * 1.0", "pair_style dpd/gen 1.0 1.0 77", "pair_coeff 1 1 25 4.5 0.5",
-              "fix 1 all nve", "timestep 0.01", "compute J all dpd/tcurrent " + std::to_string(K),
+      l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+              "neigh_modify every 1 delay 0 check yes", "read_data " + DATA, "mass * 1.0",
+              "pair_style dpd/gen 1.0 1.0 77", "pair_coeff 1 1 25 4.5 0.5", "fix 1 all nve",
+              "timestep 0.01", "compute J all dpd/tcurrent " + std::to_string(K),
               "thermo_style custom step c_J[1]", "run 50 post no"});
       auto J = current(l);
       const auto expected = direct_sum(l, 0.0, 6.0);
@@ -179,28 +180,40 @@ TEST(TCurrent, FeedsFixAveCorrelate)
 
 TEST(TCurrent, BadInputErrors)
 {
-  const std::vector<std::string> periodic = {"units lj", "region box block 0 5 0 5 0 5", "create_box 1 box",
-                                             "create_atoms 1 random 50 3 NULL", "mass 1 1.0"};
-  etdtest::expect_errors({
-      {{"compute J all dpd/tcurrent"}, "Illegal compute dpd/tcurrent command: expected 'compute ID group dpd/tcurrent K'"},
-      {{"compute J all dpd/tcurrent 4 5"}, "Illegal compute dpd/tcurrent"},
-      {{"compute J all dpd/tcurrent four"}, "must be a positive integer, got 'four'"},
-      {{"compute J all dpd/tcurrent 2.5"}, "must be a positive integer"},
-      {{"compute J all dpd/tcurrent 0"}, "must be between 1 and 100000, got 0"},
-      {{"compute J all dpd/tcurrent -3"}, "must be between 1 and 100000"},
-  }, [&](Lammps &l) { l.cmds(periodic); });
+  const std::vector<std::string> periodic = {"units lj", "region box block 0 5 0 5 0 5",
+                                             "create_box 1 box", "create_atoms 1 random 50 3 NULL",
+                                             "mass 1 1.0"};
+  etdtest::expect_errors(
+      {
+          {{"compute J all dpd/tcurrent"},
+           "Illegal compute dpd/tcurrent command: expected 'compute ID group dpd/tcurrent K'"},
+          {{"compute J all dpd/tcurrent 4 5"}, "Illegal compute dpd/tcurrent"},
+          {{"compute J all dpd/tcurrent four"}, "must be a positive integer, got 'four'"},
+          {{"compute J all dpd/tcurrent 2.5"}, "must be a positive integer"},
+          {{"compute J all dpd/tcurrent 0"}, "must be between 1 and 100000, got 0"},
+          {{"compute J all dpd/tcurrent -3"}, "must be between 1 and 100000"},
+      },
+      [&](Lammps &l) {
+        l.cmds(periodic);
+      });
   // boxes the transverse current is not defined for: a wall, a tilted box, two dimensions
   const std::vector<std::string> run = {"create_atoms 1 random 50 3 NULL", "mass 1 1.0",
-                                        "compute J all dpd/tcurrent 2", "thermo_style custom step c_J[1]", "run 0"};
+                                        "compute J all dpd/tcurrent 2",
+                                        "thermo_style custom step c_J[1]", "run 0"};
   auto box = [&](std::vector<std::string> head) {
     head.insert(head.end(), run.begin(), run.end());
     return head;
   };
-  etdtest::expect_errors({
-      {box({"units lj", "boundary p p f", "region box block 0 5 0 5 0 5", "create_box 1 box"}),
-       "requires a box periodic in x, y and z"},
-      {box({"units lj", "region box prism 0 5 0 5 0 5 1 0 0", "create_box 1 box"}), "requires an orthogonal box"},
-      {box({"units lj", "dimension 2", "region box block 0 5 0 5 -0.5 0.5", "create_box 1 box"}),
-       "requires a 3d system"},
-  }, [](Lammps &) {});
+  etdtest::expect_errors(
+      {
+          {box({"units lj", "boundary p p f", "region box block 0 5 0 5 0 5", "create_box 1 box"}),
+           "requires a box periodic in x, y and z"},
+          {box({"units lj", "region box prism 0 5 0 5 0 5 1 0 0", "create_box 1 box"}),
+           "requires an orthogonal box"},
+          {box({"units lj", "dimension 2", "region box block 0 5 0 5 -0.5 0.5",
+                "create_box 1 box"}),
+           "requires a 3d system"},
+      },
+      [](Lammps &) {
+      });
 }

@@ -11,8 +11,9 @@ using etdtest::Lammps;
 namespace {
 
 // means over the production run, sampled every 10 steps, of kBT and of the given extra quantities
-std::vector<double> mean_values(const std::string &pair_coeff, double mass, double dt, int natoms, double L,
-                                int equilibrate, int production, const std::string &integrator,
+std::vector<double> mean_values(const std::string &pair_coeff, double mass, double dt, int natoms,
+                                double L, int equilibrate, int production,
+                                const std::string &integrator,
                                 const std::vector<std::string> &extra)
 {
   std::string joined;
@@ -20,7 +21,8 @@ std::vector<double> mean_values(const std::string &pair_coeff, double mass, doub
   const std::string data = etdtest::work_file("equilibrium_" + std::to_string(natoms) + ".data");
   etdtest::write_random_data(data, natoms, L, 31337, 1, 0.0);
   Lammps l;
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + data,
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "read_data " + data,
           "mass 1 " + std::to_string(mass), "velocity all create 1.0 8731 mom yes dist gaussian",
           "pair_style dpd/gen 1.0 1.0 4242", pair_coeff, "timestep " + std::to_string(dt),
           "fix integrate all " + integrator, "run " + std::to_string(equilibrate) + " post no",
@@ -30,7 +32,8 @@ std::vector<double> mean_values(const std::string &pair_coeff, double mass, doub
           "run " + std::to_string(production) + " post no"});
   if (extra.empty()) return {l.fix_scalar("average")};
   std::vector<double> means;
-  for (size_t k = 0; k <= extra.size(); k++) means.push_back(l.fix_vector("average", static_cast<int>(k)));
+  for (size_t k = 0; k <= extra.size(); k++)
+    means.push_back(l.fix_vector("average", static_cast<int>(k)));
   return means;
 }
 
@@ -48,8 +51,8 @@ double mean_temperature(const std::string &pair_coeff, double mass, double dt, i
 TEST(Equilibrium, VelocityVerletHoldsTemperatureForS2AndHalf)
 {
   for (const char *s : {"2.0", "0.5"}) {
-    const double kT = mean_temperature(std::string("pair_coeff 1 1 25.0 4.5 ") + s, 1.0, 0.01,
-                                       3000, 10.0, 500, 16000, "nve");
+    const double kT = mean_temperature(std::string("pair_coeff 1 1 25.0 4.5 ") + s, 1.0, 0.01, 3000,
+                                       10.0, 500, 16000, "nve");
     std::printf("fix nve, m = 1, dt = 0.01, s = %s: kBT = %.4f\n", s, kT);
     EXPECT_NEAR(kT, 1.0, 0.01) << "s = " << s;
   }
@@ -74,10 +77,12 @@ TEST(Equilibrium, EtdHoldsTemperatureAtLowMass)
 // cooling at the larger step comes from the conservative-force splitting, not the friction.
 TEST(Equilibrium, ImplicitHoldsTemperatureAtLargeSteps)
 {
-  struct Case { double mass, dt; };
+  struct Case {
+    double mass, dt;
+  };
   for (const Case c : {Case{0.01, 0.003}, Case{0.001, 0.001}}) {
-    const double kT = mean_temperature("pair_coeff 1 1 18.75 4.5 0.5", c.mass, c.dt, 4000, 10.0, 300,
-                                       1500, "etd scheme implicit");
+    const double kT = mean_temperature("pair_coeff 1 1 18.75 4.5 0.5", c.mass, c.dt, 4000, 10.0,
+                                       300, 1500, "etd scheme implicit");
     std::printf("fix etd scheme implicit, m = %g, dt = %g: kBT = %.4f\n", c.mass, c.dt, kT);
     EXPECT_NEAR(kT, 1.0, 0.01) << "m = " << c.mass << ", dt = " << c.dt;
   }
@@ -89,10 +94,10 @@ TEST(Equilibrium, ImplicitHoldsTemperatureAtLargeSteps)
 // standard error about 0.1 %.
 TEST(Equilibrium, ImplicitFrictionStepTemperatureHasNoSplittingDeficit)
 {
-  const auto means = mean_values("pair_coeff 1 1 18.75 4.5 0.5", 0.001, 0.0015, 4000, 10.0, 300, 1500,
-                                 "etd scheme implicit", {"f_integrate[5]"});
-  std::printf("m = 0.001, dt = 0.0015: kBT end of step %.4f, after the friction step %.4f\n", means[0],
-              means[1]);
+  const auto means = mean_values("pair_coeff 1 1 18.75 4.5 0.5", 0.001, 0.0015, 4000, 10.0, 300,
+                                 1500, "etd scheme implicit", {"f_integrate[5]"});
+  std::printf("m = 0.001, dt = 0.0015: kBT end of step %.4f, after the friction step %.4f\n",
+              means[0], means[1]);
   EXPECT_NEAR(means[1], 1.0, 0.006);
   EXPECT_NEAR(1.0 - means[0] / means[1], 0.0175, 0.006);
 }

@@ -17,7 +17,8 @@ void fluid(Lammps &l, const std::string &pair_coeff, double mass = 0.01, double 
            int natoms = 500, double L = 5.0)
 {
   etdtest::write_random_data(DATA, natoms, L, 1234, 1, 1.0);
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + DATA,
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "read_data " + DATA,
           "mass 1 " + std::to_string(mass), "pair_style dpd/gen " + std::to_string(T) + " 1.0 555",
           pair_coeff});
 }
@@ -70,7 +71,8 @@ TEST(FixEtd, ConvergenceOrderByStepRefinement)
   for (int order : {1, 2}) {
     const auto reference = deterministic_run(order, 0.016 / 1280);
     std::vector<double> errors;
-    for (int n : {40, 80, 160}) errors.push_back(max_abs_diff(deterministic_run(order, 0.016 / n), reference));
+    for (int n : {40, 80, 160})
+      errors.push_back(max_abs_diff(deterministic_run(order, 0.016 / n), reference));
     const double p1 = std::log2(errors[0] / errors[1]), p2 = std::log2(errors[1] / errors[2]);
     std::printf("order %d: errors %.3e %.3e %.3e, observed orders %.2f %.2f\n", order, errors[0],
                 errors[1], errors[2], p1, p2);
@@ -88,19 +90,22 @@ TEST(FixEtd, RestartContinuesExactlyWithOrder2State)
   {
     Lammps l;
     fluid(l, "pair_coeff 1 1 18.75 4.5 0.5");
-    l.cmds({"timestep 0.001", "fix 1 all etd order 2", "run 30 post no", "write_restart " + restart, "run 30 post no"});
+    l.cmds({"timestep 0.001", "fix 1 all etd order 2", "run 30 post no", "write_restart " + restart,
+            "run 30 post no"});
     x_ref = l.gather("x");
     v_ref = l.gather("v");
   }
   {
     // without order-2 state the continuation must differ: the test can fail
     Lammps l;
-    l.cmds({"plugin load " + std::string(ETD_PLUGIN_PATH), "read_restart " + restart, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
+    l.cmds({"plugin load " + std::string(ETD_PLUGIN_PATH), "read_restart " + restart,
+            "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
             "fix 1 all etd order 1", "run 30 post no"});
     EXPECT_GT(max_abs_diff(l.gather("v"), v_ref), 1e-8);
   }
   Lammps l;
-  l.cmds({"read_restart " + restart, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "fix 1 all etd order 2", "run 30 post no"});
+  l.cmds({"read_restart " + restart, "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "fix 1 all etd order 2", "run 30 post no"});
   EXPECT_LT(max_abs_diff(l.gather("x"), x_ref), 1e-12);
   EXPECT_LT(max_abs_diff(l.gather("v"), v_ref), 1e-10);
 }
@@ -109,8 +114,9 @@ TEST(FixEtd, AtomsOutsideTheGroupDoNotMove)
 {
   Lammps l;
   fluid(l, "pair_coeff 1 1 18.75 4.5 0.5");
-  l.cmds({"region wall block INF INF INF INF 0 1", "group wall region wall", "group mobile subtract all wall",
-          "velocity wall set 0.5 0 0", "timestep 0.001", "fix 1 mobile etd"});
+  l.cmds({"region wall block INF INF INF INF 0 1", "group wall region wall",
+          "group mobile subtract all wall", "velocity wall set 0.5 0 0", "timestep 0.001",
+          "fix 1 mobile etd"});
   auto x0 = l.gather("x"), v0 = l.gather("v");
   l.cmd("run 10 post no");
   auto x1 = l.gather("x"), v1 = l.gather("v");
@@ -157,7 +163,8 @@ TEST(FixEtd, MomentumConserveOptionRemovesTheDrift)
     Lammps l;
     fluid(l, "pair_coeff 1 1 18.75 4.5 0.5");
     l.cmds({"velocity all zero linear", "timestep 0.002",
-            std::string("fix 1 all etd momentum ") + (conserve ? "conserve" : "none"), "run 500 post no"});
+            std::string("fix 1 all etd momentum ") + (conserve ? "conserve" : "none"),
+            "run 500 post no"});
     drift[conserve] = total_momentum(l);
   }
   // thermal momentum scale of one atom: sqrt(m kT) = 0.1
@@ -167,15 +174,20 @@ TEST(FixEtd, MomentumConserveOptionRemovesTheDrift)
 
 TEST(FixEtd, BadInputGivesClearErrors)
 {
-  etdtest::expect_errors({
-      {{"fix 1 all etd order 3"}, "order must be 1 or 2"},
-      {{"fix 1 all etd noise gaussian"}, "noise must be piecewise or exact"},
-      {{"fix 1 all etd momentum maybe"}, "momentum must be none or conserve"},
-      {{"fix 1 all etd order"}, "keyword order needs a value"},
-      {{"fix 1 all etd colour red"}, "unknown keyword colour"},
-      {{"pair_style zero 1.0", "pair_coeff * *", "fix 1 all etd", "run 0"}, "requires pair style dpd/gen"},
-      {{"fix 1 all etd", "run_style respa 2 2", "run 0"}, "respa"},
-  }, [](Lammps &l) { fluid(l, "pair_coeff 1 1 18.75 4.5 0.5"); });
+  etdtest::expect_errors(
+      {
+          {{"fix 1 all etd order 3"}, "order must be 1 or 2"},
+          {{"fix 1 all etd noise gaussian"}, "noise must be piecewise or exact"},
+          {{"fix 1 all etd momentum maybe"}, "momentum must be none or conserve"},
+          {{"fix 1 all etd order"}, "keyword order needs a value"},
+          {{"fix 1 all etd colour red"}, "unknown keyword colour"},
+          {{"pair_style zero 1.0", "pair_coeff * *", "fix 1 all etd", "run 0"},
+           "requires pair style dpd/gen"},
+          {{"fix 1 all etd", "run_style respa 2 2", "run 0"}, "respa"},
+      },
+      [](Lammps &l) {
+        fluid(l, "pair_coeff 1 1 18.75 4.5 0.5");
+      });
 }
 
 TEST(FixEtd, HybridOverlayWithAnotherStyleMatchesThePlainStyle)
@@ -229,7 +241,7 @@ TEST(FixEtd, OrderTwoDropsItsHistoryWhenVelocitiesChangeBetweenRuns)
   // created atoms: no garbage history (a new atom's first step is finite)
   Lammps created;
   fluid(created, "pair_coeff 1 1 18.75 4.5 0.5");
-  created.cmds({"timestep 0.001", "fix 1 all etd order 2", "run 20 post no", "create_atoms 1 random 20 5 NULL",
-                "run 5 post no"});
+  created.cmds({"timestep 0.001", "fix 1 all etd order 2", "run 20 post no",
+                "create_atoms 1 random 20 5 NULL", "run 5 post no"});
   for (double v : created.gather("v")) ASSERT_TRUE(std::isfinite(v));
 }

@@ -1,8 +1,8 @@
 // fix etd scheme implicit: momentum, frozen atoms, the pair styles' conservative-only mode,
 // restart continuity, the zero-mass limit, errors. Temperature at large steps is in
 // test_equilibrium (label physics); rank-count agreement in test_ranks.
-#include "lammps_fixture.h"
 #include "lammps.h"
+#include "lammps_fixture.h"
 #include "neighbor.h"
 
 #include <gtest/gtest.h>
@@ -19,7 +19,8 @@ const std::string DATA = etdtest::work_file("etd_implicit_config.data");
 void fluid(Lammps &l, double mass = 0.01)
 {
   etdtest::write_random_data(DATA, 500, 5.0, 4321, 1, 1.0);
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + DATA,
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "read_data " + DATA,
           "mass 1 " + std::to_string(mass), "pair_style dpd/gen 1.0 1.0 555",
           "pair_coeff 1 1 18.75 4.5 0.5"});
 }
@@ -65,9 +66,9 @@ TEST(FixEtdImplicit, AtomsOutsideTheGroupKeepTheirVelocitiesAndDragTheFluid)
 {
   Lammps l;
   fluid(l);
-  l.cmds({"region wall block INF INF INF INF 0 1", "group wall region wall", "group mobile subtract all wall",
-          "velocity mobile zero linear", "velocity wall set 5.0 0 0", "timestep 0.002",
-          "fix 1 mobile etd scheme implicit"});
+  l.cmds({"region wall block INF INF INF INF 0 1", "group wall region wall",
+          "group mobile subtract all wall", "velocity mobile zero linear",
+          "velocity wall set 5.0 0 0", "timestep 0.002", "fix 1 mobile etd scheme implicit"});
   auto x0 = l.gather("x"), v0 = l.gather("v");
   l.cmd("run 20 post no");
   auto x1 = l.gather("x"), v1 = l.gather("v");
@@ -96,7 +97,8 @@ TEST(FixEtdImplicit, PairStyleLeavesFrictionAndNoiseToTheFix)
 {
   Lammps l;
   fluid(l);
-  l.cmds({"compute split all dpd/split", "timestep 0.002", "fix 1 all etd scheme implicit", "run 0 post no"});
+  l.cmds({"compute split all dpd/split", "timestep 0.002", "fix 1 all etd scheme implicit",
+          "run 0 post no"});
   auto f = l.gather("f");
   auto split = l.gather_compute("split", 9);
   double dissipative_and_random = 0.0, mismatch = 0.0;
@@ -127,9 +129,10 @@ TEST(FixEtdImplicit, SplitReportsTheFrictionStepItTook)
   const double h = 0.002, m = 0.01;
   // atoms re-sorted (and, with ranks, exchanged) at every step: the recorded split follows them
   l.cmds({"atom_modify sort 1 0.5", "neigh_modify every 1 delay 0 check no",
-          "region wall block INF INF INF INF 0 1", "group wall region wall", "group mobile subtract all wall",
-          "velocity wall set 5.0 0 0", "timestep 0.002", "fix 1 mobile etd scheme implicit tol 1e-12",
-          "compute split all dpd/split", "run 0 post no"});
+          "region wall block INF INF INF INF 0 1", "group wall region wall",
+          "group mobile subtract all wall", "velocity wall set 5.0 0 0", "timestep 0.002",
+          "fix 1 mobile etd scheme implicit tol 1e-12", "compute split all dpd/split",
+          "run 0 post no"});
   const auto v0 = l.gather("v"), f0 = l.gather("f"), x0 = l.gather("x");
   l.cmd("run 1 post no");
   const auto v1 = l.gather("v"), f1 = l.gather("f"), split = l.gather_compute("split", 9);
@@ -147,7 +150,8 @@ TEST(FixEtdImplicit, SplitReportsTheFrictionStepItTook)
         if (k == 0) wall_drag += d + r;
         continue;
       }
-      const double kick = m * (v1[3 * a + k] - v0[3 * a + k]) - 0.5 * h * (f0[3 * a + k] + f1[3 * a + k]);
+      const double kick =
+          m * (v1[3 * a + k] - v0[3 * a + k]) - 0.5 * h * (f0[3 * a + k] + f1[3 * a + k]);
       worst = std::max(worst, std::fabs(kick - h * (d + r)));
       scale = std::max(scale, std::fabs(h * (d + r)));
     }
@@ -170,8 +174,9 @@ TEST(FixEtdImplicit, OverdampedSplitBalancesTheForce)
   for (const std::string midpoint : {"yes", "no"}) {
     Lammps l;
     fluid(l);
-    l.cmds({"region wall block INF INF INF INF 0 1", "group wall region wall", "group mobile subtract all wall",
-            "timestep 0.001", "fix 1 mobile etd scheme implicit overdamped yes tol 1e-12 midpoint " + midpoint,
+    l.cmds({"region wall block INF INF INF INF 0 1", "group wall region wall",
+            "group mobile subtract all wall", "timestep 0.001",
+            "fix 1 mobile etd scheme implicit overdamped yes tol 1e-12 midpoint " + midpoint,
             "compute split all dpd/split", "run 0 post no"});
     const auto f0 = l.gather("f"), x0 = l.gather("x");
     l.cmd("run 1 post no");
@@ -180,7 +185,8 @@ TEST(FixEtdImplicit, OverdampedSplitBalancesTheForce)
     for (size_t a = 0; a < f0.size() / 3; a++) {
       if (x0[3 * a + 2] < 1.0) continue;
       for (int k = 0; k < 3; k++) {
-        worst = std::max(worst, std::fabs(split[9 * a + 3 + k] + split[9 * a + 6 + k] + f0[3 * a + k]));
+        worst =
+            std::max(worst, std::fabs(split[9 * a + 3 + k] + split[9 * a + 6 + k] + f0[3 * a + k]));
         scale = std::max(scale, std::fabs(f0[3 * a + k]));
         r_size = std::max(r_size, std::fabs(split[9 * a + 6 + k]));
       }
@@ -203,7 +209,8 @@ TEST(FixEtdImplicit, RestartContinuesTheTrajectory)
     v_ref = l.gather("v");
   }
   Lammps l;
-  l.cmds({"read_restart " + restart, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "fix 1 all etd scheme implicit tol 1e-12",
+  l.cmds({"read_restart " + restart, "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "fix 1 all etd scheme implicit tol 1e-12",
           "run 20 post no"});
   double scale = 0.0;
   for (double v : v_ref) scale = std::max(scale, std::fabs(v));
@@ -224,7 +231,10 @@ TEST(FixEtdImplicit, OverdampedStepHasZeroMeanVelocityAndMoves)
   double mean[3] = {0, 0, 0}, rms = 0.0;
   const size_t n = v.size() / 3;
   for (size_t a = 0; a < n; a++)
-    for (int k = 0; k < 3; k++) { mean[k] += v[3 * a + k] / n; rms += v[3 * a + k] * v[3 * a + k] / (3 * n); }
+    for (int k = 0; k < 3; k++) {
+      mean[k] += v[3 * a + k] / n;
+      rms += v[3 * a + k] * v[3 * a + k] / (3 * n);
+    }
   for (double m : mean) EXPECT_LT(std::fabs(m), 1e-8 * std::sqrt(rms));
   EXPECT_GT(max_abs_diff(x1, x0), 1e-4);
   EXPECT_GT(l.fix_vector("1", 0), 5.0);
@@ -240,14 +250,16 @@ TEST(FixEtdImplicit, OverdampedStepMovesByTheStepTimesItsVelocity)
   for (const std::string midpoint : {"yes", "no"}) {
     Lammps l;
     fluid(l);
-    l.cmds({"timestep 0.001", "fix 1 all etd scheme implicit overdamped yes tol 1e-10 midpoint " + midpoint,
+    l.cmds({"timestep 0.001",
+            "fix 1 all etd scheme implicit overdamped yes tol 1e-10 midpoint " + midpoint,
             "run 0 post no"});
     const auto x0 = l.gather("x");
     l.cmd("run 1 post no");
     const auto x1 = l.gather("x"), v = l.gather("v");
     double worst = 0.0;
     for (size_t k = 0; k < x0.size(); k++)
-      if (std::fabs(x1[k] - x0[k]) < 1.0) worst = std::max(worst, std::fabs(x1[k] - x0[k] - 0.001 * v[k]));
+      if (std::fabs(x1[k] - x0[k]) < 1.0)
+        worst = std::max(worst, std::fabs(x1[k] - x0[k] - 0.001 * v[k]));
     EXPECT_LT(worst, 1e-12) << "midpoint " << midpoint;
     velocities.push_back(v);
   }
@@ -264,8 +276,9 @@ TEST(FixEtdImplicit, StartFromOldVelocitiesSolvesTheSameSystem)
   auto one_step = [](const std::string &velocity, const std::string &options, double *iterations) {
     Lammps l;
     etdtest::write_random_data(DATA, 500, 5.0, 4321, 1, 1.0);
-    l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + DATA,
-            "mass 1 0.001", "pair_style dpd/gen 0.0 1.0 555", "pair_coeff 1 1 0.0 4.5 0.5",
+    l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+            "neigh_modify every 1 delay 0 check yes", "read_data " + DATA, "mass 1 0.001",
+            "pair_style dpd/gen 0.0 1.0 555", "pair_coeff 1 1 0.0 4.5 0.5",
             "variable wave atom sin(2.0*PI*z/5.0)", "velocity all set " + velocity,
             "timestep 0.001", "fix 1 all etd scheme implicit " + options, "run 1 post no"});
     if (iterations) *iterations = l.fix_vector("1", 0);
@@ -282,28 +295,35 @@ TEST(FixEtdImplicit, StartFromOldVelocitiesSolvesTheSameSystem)
   one_step("1.0 0.0 0.0", "tol 1e-10", &it_jacobi);
   EXPECT_EQ(it_start, 0.0);
   EXPECT_GT(it_jacobi, 2.0);
-  for (size_t k = 0; k < v_moved.size(); k++) ASSERT_NEAR(v_moved[k], k % 3 == 0 ? 1.0 : 0.0, 1e-12);
+  for (size_t k = 0; k < v_moved.size(); k++)
+    ASSERT_NEAR(v_moved[k], k % 3 == 0 ? 1.0 : 0.0, 1e-12);
 }
 
 TEST(FixEtdImplicit, BadInputGivesClearErrors)
 {
-  etdtest::expect_errors({
-      {{"fix 1 all etd scheme explicit"}, "scheme must be diagonal or implicit"},
-      {{"fix 1 all etd scheme implicit tol 0"}, "tol must be between 0 and 1"},
-      {{"fix 1 all etd scheme implicit tol 2"}, "tol must be between 0 and 1"},
-      {{"fix 1 all etd scheme implicit maxiter 0"}, "maxiter must be a positive integer"},
-      {{"fix 1 all etd scheme implicit start old"}, "start must be velocity or jacobi"},
-      {{"fix 1 all etd scheme implicit overdamped yes start velocity"}, "start velocity needs overdamped no"},
-      {{"fix 1 all etd scheme implicit overdamped maybe"}, "overdamped must be yes or no"},
-      {{"fix 1 all etd scheme implicit overdamped yes midpoint 1"}, "midpoint must be yes or no"},
-      {{"fix 1 all etd scheme implicit order 2"}, "keyword order belongs to scheme diagonal"},
-      {{"fix 1 all etd scheme implicit tol"}, "keyword tol needs a value"},
-      {{"fix 1 all etd scheme implicit colour red"}, "unknown keyword colour"},
-      {{"fix 1 all etd overdamped yes"}, "unknown keyword overdamped"},
-      {{"pair_style zero 1.0", "pair_coeff * *", "fix 1 all etd scheme implicit", "run 0"},
-       "requires pair style dpd/gen"},
-      {{"fix 1 all etd scheme implicit", "run_style respa 2 2", "run 0"}, "respa"},
-  }, [](Lammps &l) { fluid(l); });
+  etdtest::expect_errors(
+      {
+          {{"fix 1 all etd scheme explicit"}, "scheme must be diagonal or implicit"},
+          {{"fix 1 all etd scheme implicit tol 0"}, "tol must be between 0 and 1"},
+          {{"fix 1 all etd scheme implicit tol 2"}, "tol must be between 0 and 1"},
+          {{"fix 1 all etd scheme implicit maxiter 0"}, "maxiter must be a positive integer"},
+          {{"fix 1 all etd scheme implicit start old"}, "start must be velocity or jacobi"},
+          {{"fix 1 all etd scheme implicit overdamped yes start velocity"},
+           "start velocity needs overdamped no"},
+          {{"fix 1 all etd scheme implicit overdamped maybe"}, "overdamped must be yes or no"},
+          {{"fix 1 all etd scheme implicit overdamped yes midpoint 1"},
+           "midpoint must be yes or no"},
+          {{"fix 1 all etd scheme implicit order 2"}, "keyword order belongs to scheme diagonal"},
+          {{"fix 1 all etd scheme implicit tol"}, "keyword tol needs a value"},
+          {{"fix 1 all etd scheme implicit colour red"}, "unknown keyword colour"},
+          {{"fix 1 all etd overdamped yes"}, "unknown keyword overdamped"},
+          {{"pair_style zero 1.0", "pair_coeff * *", "fix 1 all etd scheme implicit", "run 0"},
+           "requires pair style dpd/gen"},
+          {{"fix 1 all etd scheme implicit", "run_style respa 2 2", "run 0"}, "respa"},
+      },
+      [](Lammps &l) {
+        fluid(l);
+      });
 }
 
 // Overdamped Couette flow: frozen walls (z < 1 moving at -U, z > 9 at +U; periodic, so the
@@ -317,13 +337,14 @@ TEST(FixEtdImplicit, OverdampedCouetteFlowIsLinear)
   etdtest::write_random_data(data, 2000, 8.0, 97, 1, 0.0);
   Lammps l;
   const double U = 5.0;
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + data,
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "read_data " + data,
           "change_box all z final 0 10 remap", "mass 1 0.01", "pair_style dpd/gen 1.0 1.0 555",
           "pair_coeff 1 1 18.75 4.5 0.5", "region bottom block INF INF INF INF INF 1.0",
           "region top block INF INF INF INF 9.0 INF", "group bottom region bottom",
           "group top region top", "group walls union bottom top", "group fluid subtract all walls",
-          "velocity bottom set -5.0 0 0", "velocity top set 5.0 0 0",
-          "timestep 0.002", "fix 1 fluid etd scheme implicit", "run 100 post no", "unfix 1",
+          "velocity bottom set -5.0 0 0", "velocity top set 5.0 0 0", "timestep 0.002",
+          "fix 1 fluid etd scheme implicit", "run 100 post no", "unfix 1",
           // (from random positions the zero-mass friction system is singular: start overdamped
           // runs from a configuration equilibrated with inertia)
           "fix 1 fluid etd scheme implicit overdamped yes", "run 20 post no"});
@@ -363,7 +384,10 @@ TEST(FixEtdImplicit, OverdampedCouetteFlowIsLinear)
   for (int b = 0; b < nbins; b++) {
     zc[b] = 1.0 + (b + 0.5) * 8.0 / nbins;
     u[b] = sum[b] / count[b];
-    sz += zc[b]; su += u[b]; szz += zc[b] * zc[b]; szu += zc[b] * u[b];
+    sz += zc[b];
+    su += u[b];
+    szz += zc[b] * zc[b];
+    szu += zc[b] * u[b];
   }
   const double slope = (nbins * szu - sz * su) / (nbins * szz - sz * sz);
   const double intercept = (su - slope * sz) / nbins;
@@ -380,35 +404,44 @@ TEST(FixEtdImplicit, OverdampedCouetteFlowIsLinear)
     worst = std::max(worst, deviation);
     worst_in_errors = std::max(worst_in_errors, deviation / error);
     if (etdtest::world_rank() == 0)
-      std::printf("  z %.2f u %.3f +- %.3f line %.3f n %.0f\n", zc[b], u[b], error, intercept + slope * zc[b], count[b]);
+      std::printf("  z %.2f u %.3f +- %.3f line %.3f n %.0f\n", zc[b], u[b], error,
+                  intercept + slope * zc[b], count[b]);
   }
   if (etdtest::world_rank() == 0)
-    std::printf("overdamped Couette: slope %.3f (walls 2U/8 = %.3f), u(5) = %.3f (fluid mean velocity "
-                "+- %.3f), worst bin %.3f (%.1f standard errors)\n",
-                slope, 2 * U / 8, intercept + 5.0 * slope, error_of_mean, worst, worst_in_errors);
+    std::printf(
+        "overdamped Couette: slope %.3f (walls 2U/8 = %.3f), u(5) = %.3f (fluid mean velocity "
+        "+- %.3f), worst bin %.3f (%.1f standard errors)\n",
+        slope, 2 * U / 8, intercept + 5.0 * slope, error_of_mean, worst, worst_in_errors);
   EXPECT_GT(slope, 0.5 * 2 * U / 8);    // the walls drive the fluid
   EXPECT_LT(slope, 1.2 * 2 * U / 8);    // but cannot shear it faster than they move
   // antisymmetric about the middle, within 4 standard errors of the fluid's mean velocity
   // (about 0.25 here)
   EXPECT_LT(std::fabs(intercept + 5.0 * slope), 4.0 * error_of_mean);
-  EXPECT_LT(error_of_mean, 0.5);          // and that error is small against the walls' 5
-  EXPECT_LT(worst_in_errors, 4.0);        // linear: no bin off the line by more than its noise
+  EXPECT_LT(error_of_mean, 0.5);      // and that error is small against the walls' 5
+  EXPECT_LT(worst_in_errors, 4.0);    // linear: no bin off the line by more than its noise
 }
 
 // dpd/fpm with rotation has no zero-mass form here: overdamped yes is refused, as is an atom
 // without moment of inertia
 TEST(FixEtdImplicit, FpmRefusesOverdampedAndZeroInertia)
 {
-  const std::vector<std::string> box = {
-      "units lj", "atom_style sphere", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "region box block 0 5 0 5 0 5",
-      "create_box 1 box", "create_atoms 1 single 1 1 1", "create_atoms 1 single 1.5 1 1",
-      "pair_style dpd/fpm 1.0 1.0 123", "pair_coeff 1 1 25 4.5 4.5 0.5"};
+  const std::vector<std::string> box = {"units lj",
+                                        "atom_style sphere",
+                                        "comm_modify vel yes",
+                                        "neigh_modify every 1 delay 0 check yes",
+                                        "region box block 0 5 0 5 0 5",
+                                        "create_box 1 box",
+                                        "create_atoms 1 single 1 1 1",
+                                        "create_atoms 1 single 1.5 1 1",
+                                        "pair_style dpd/fpm 1.0 1.0 123",
+                                        "pair_coeff 1 1 25 4.5 4.5 0.5"};
   {
     Lammps l;
     auto cmds = box;
     cmds.insert(cmds.end(), {"fix 1 all etd scheme implicit overdamped yes", "run 1"});
     const std::string message = l.error_of(cmds);
-    EXPECT_NE(message.find("overdamped yes is not available with pair style dpd/fpm"), std::string::npos)
+    EXPECT_NE(message.find("overdamped yes is not available with pair style dpd/fpm"),
+              std::string::npos)
         << message;
   }
   {
@@ -446,9 +479,12 @@ TEST(FixEtdImplicit, RefusesNeighborSettingsThatLetAtomsOutrunTheSkin)
     std::string fix, timestep, neigh, expected;
   };
   const std::vector<Case> cases = {
-      {"etd scheme implicit", "0.003", "neigh_modify every 1 delay 10 check yes", "lets atoms outrun the neighbor skin"},
-      {"etd scheme implicit", "0.003", "neigh_modify every 2 delay 0 check yes", "lets atoms outrun the neighbor skin"},
-      {"etd", "0.003", "neigh_modify every 1 delay 10 check yes", "lets atoms outrun the neighbor skin"},
+      {"etd scheme implicit", "0.003", "neigh_modify every 1 delay 10 check yes",
+       "lets atoms outrun the neighbor skin"},
+      {"etd scheme implicit", "0.003", "neigh_modify every 2 delay 0 check yes",
+       "lets atoms outrun the neighbor skin"},
+      {"etd", "0.003", "neigh_modify every 1 delay 10 check yes",
+       "lets atoms outrun the neighbor skin"},
       {"etd scheme implicit overdamped yes", "0.0001", "neigh_modify every 1 delay 10 check yes",
        "a zero-mass step has no speed to bound"},
       {"etd scheme implicit", "0.003", "neigh_modify every 1 delay 0 check no", ""},
@@ -463,7 +499,8 @@ TEST(FixEtdImplicit, RefusesNeighborSettingsThatLetAtomsOutrunTheSkin)
       EXPECT_EQ(message, "") << c.fix << " dt " << c.timestep << ", " << c.neigh;
       continue;
     }
-    EXPECT_NE(message.find(c.expected), std::string::npos) << c.fix << ", " << c.neigh << " gave: '" << message << "'";
+    EXPECT_NE(message.find(c.expected), std::string::npos)
+        << c.fix << ", " << c.neigh << " gave: '" << message << "'";
     EXPECT_NE(message.find("neigh_modify every 1 delay 0 check yes"), std::string::npos) << message;
   }
 }
@@ -481,21 +518,25 @@ TEST(FixEtdImplicit, RunWithDangerousBuildsEndsWithAWarning)
     std::string fix, skin;
     bool warned;
   };
-  for (const Case &c : {Case{"etd scheme implicit", "0.02", true}, Case{"etd scheme implicit", "0.6", false},
-                        Case{"etd", "0.02", true}}) {
-    const std::string log = etdtest::work_file("etd_implicit_danger_np" + std::to_string(etdtest::world_size()) + ".log");
-    bool dangerous = false;    // LAMMPS's own count, read from its Neighbor (not from its log wording)
+  for (const Case &c : {Case{"etd scheme implicit", "0.02", true},
+                        Case{"etd scheme implicit", "0.6", false}, Case{"etd", "0.02", true}}) {
+    const std::string log = etdtest::work_file("etd_implicit_danger_np" +
+                                               std::to_string(etdtest::world_size()) + ".log");
+    bool dangerous =
+        false;    // LAMMPS's own count, read from its Neighbor (not from its log wording)
     {
       Lammps l;
       fluid(l);
-      l.cmds({"log " + log, "neighbor " + c.skin + " bin", "velocity all create 1.0 5 mom yes dist gaussian",
+      l.cmds({"log " + log, "neighbor " + c.skin + " bin",
+              "velocity all create 1.0 5 mom yes dist gaussian",
               "timestep " + std::string(c.fix == "etd" ? "0.001" : "0.003"), "fix 1 all " + c.fix,
               "run 50"});
       dangerous = l.lmp->neighbor->ndanger > 0;
     }
     if (etdtest::world_rank() != 0) continue;    // (rank 0 writes the log)
     const std::string text = read_file(log);
-    const bool warned = text.find("dangerous neighbor list builds in this run") != std::string::npos;
+    const bool warned =
+        text.find("dangerous neighbor list builds in this run") != std::string::npos;
     EXPECT_EQ(warned, c.warned) << c.fix << ", skin " << c.skin;
     if (c.fix == "etd") EXPECT_TRUE(dangerous) << "the diagonal scheme at skin 0.02";
     if (!c.warned) EXPECT_FALSE(dangerous) << c.fix << ", skin " << c.skin;

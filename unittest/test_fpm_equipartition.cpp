@@ -22,13 +22,26 @@ Temperatures measure(const std::string &integrator)
   const std::string data = etdtest::work_file("fpm_equipartition.data");
   etdtest::write_random_sphere_data(data, 1536, 8.0, 2468, 10, 0.0, 0.0, 1.0);
   Lammps l;
-  l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
-          "read_data " + data, "set group all mass 1.0", "set type 3*10 type 1",
-          "velocity all create 1.0 1357 mom yes dist gaussian", "pair_style dpd/fpm 1.0 1.0 8642",
-          "pair_coeff * * 25 4.5 4.5 0.5", "pair_coeff 1 2 25 3.5 5.5 0.5", "timestep 0.01",
-          "fix integrate all " + integrator, "compute rot all erotate/sphere",
-          "variable trot equal c_rot/(1.5*atoms)", "run 300 post no", "reset_timestep 0",
-          "fix average all ave/time 10 200 2000 c_thermo_temp v_trot", "run 2000 post no"});
+  l.cmds({"units lj",
+          "atom_style sphere",
+          "atom_modify map array",
+          "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes",
+          "read_data " + data,
+          "set group all mass 1.0",
+          "set type 3*10 type 1",
+          "velocity all create 1.0 1357 mom yes dist gaussian",
+          "pair_style dpd/fpm 1.0 1.0 8642",
+          "pair_coeff * * 25 4.5 4.5 0.5",
+          "pair_coeff 1 2 25 3.5 5.5 0.5",
+          "timestep 0.01",
+          "fix integrate all " + integrator,
+          "compute rot all erotate/sphere",
+          "variable trot equal c_rot/(1.5*atoms)",
+          "run 300 post no",
+          "reset_timestep 0",
+          "fix average all ave/time 10 200 2000 c_thermo_temp v_trot",
+          "run 2000 post no"});
   return {l.fix_vector("average", 0), l.fix_vector("average", 1)};
 }
 

@@ -20,8 +20,13 @@ const std::string DATA = etdtest::work_file("fpm_implicit.data");
 
 std::vector<std::string> sphere_fluid(const std::string &data, double mass)
 {
-  return {"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
-          "read_data " + data, "set group all mass " + std::to_string(mass)};
+  return {"units lj",
+          "atom_style sphere",
+          "atom_modify map array",
+          "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes",
+          "read_data " + data,
+          "set group all mass " + std::to_string(mass)};
 }
 
 double max_rel_diff(const std::vector<double> &a, const std::vector<double> &b)
@@ -82,7 +87,8 @@ TEST(FpmImplicit, KeepsTranslationalAndRotationalTemperatureAtAStiffStep)
           "fix average all ave/time 4 100 400 c_thermo_temp v_trot", "run 400 post no"});
   const double kt = l.fix_vector("average", 0), rot = l.fix_vector("average", 1);
   std::printf("dpd/fpm + implicit, m = 0.01, dt = 0.003: kBT = %.4f, rotational kBT = %.4f, "
-              "%.1f CG iterations\n", kt, rot, l.fix_vector("1", 2));
+              "%.1f CG iterations\n",
+              kt, rot, l.fix_vector("1", 2));
   EXPECT_NEAR(kt, 1.0, 0.02);
   EXPECT_NEAR(rot, 1.0, 0.02);
 }

@@ -59,12 +59,14 @@ TEST(FpmKernel, ZeroShearFrictionIsTheDpdGenKernel)
       const double special = (n % 3 == 0) ? 0.5 : 1.0;
       const auto fpm = evaluate(c, p, 10.0, special);
       const double r = p.r();
-      const double e_dot_v = (p.del[0] * p.v_ij[0] + p.del[1] * p.v_ij[1] + p.del[2] * p.v_ij[2]) / r;
+      const double e_dot_v =
+          (p.del[0] * p.v_ij[0] + p.del[1] * p.v_ij[1] + p.del[2] * p.v_ij[2]) / r;
       const auto ref = etd::pair_force(g, r * r, r, e_dot_v, p.noise.central, 10.0, special);
       for (int k = 0; k < 3; k++) {
         const double e = p.del[k] / r;
         EXPECT_NEAR(fpm.conservative[k], ref.conservative * e, 1e-13 * std::fabs(ref.conservative));
-        EXPECT_NEAR(fpm.dissipative[k], ref.dissipative * e, 1e-13 * (1 + std::fabs(ref.dissipative)));
+        EXPECT_NEAR(fpm.dissipative[k], ref.dissipative * e,
+                    1e-13 * (1 + std::fabs(ref.dissipative)));
         EXPECT_NEAR(fpm.random[k], ref.random * e, 1e-13 * (1 + std::fabs(ref.random)));
         EXPECT_EQ(fpm.torque[k], 0.0);
       }
@@ -124,9 +126,10 @@ TEST(FpmKernel, RigidBodyMotionOfThePairIsNotDamped)
   p.del[0] = 0.6;
   p.omega_i[2] = 1.0;
   const auto res = evaluate(c, p, 1.0);
-  EXPECT_NEAR(res.dissipative[1], 4.5 * std::sqrt(0.4) * 0.3, 1e-14);    // -gS w (r/2 x) x (W z) = +y
+  EXPECT_NEAR(res.dissipative[1], 4.5 * std::sqrt(0.4) * 0.3,
+              1e-14);    // -gS w (r/2 x) x (W z) = +y
   EXPECT_EQ(res.dissipative[0], 0.0);
-  EXPECT_NEAR(res.torque[2], -4.5 * std::sqrt(0.4) * 0.09, 1e-14);      // opposes the spin
+  EXPECT_NEAR(res.torque[2], -4.5 * std::sqrt(0.4) * 0.09, 1e-14);    // opposes the spin
 }
 
 TEST(FpmKernel, FrictionDiagonalsAreTheKernelsDerivatives)
@@ -167,7 +170,9 @@ TEST(FpmKernel, NoiseCovarianceIsTwoKTTimesTheFrictionMatrix)
   c.set(0.0, gc, gs, s, 1.0, kT);
   const etd::PairNoise noise(2024, etd::NoiseStream::PairScalar);
   PairState p{};
-  p.del[0] = 0.3; p.del[1] = -0.4; p.del[2] = 0.2;
+  p.del[0] = 0.3;
+  p.del[1] = -0.4;
+  p.del[2] = 0.2;
   const double r = p.r();
   const double e[3] = {p.del[0] / r, p.del[1] / r, p.del[2] / r};
   const double w = std::pow(1 - r, s);
@@ -227,7 +232,8 @@ TEST(FpmKernel, DissipationAndRandomForceAreThePairsOwn)
       const double rinv = 1.0 / r;    // e as fpm_pair forms it
       const double e[3] = {p.del[0] * rinv, p.del[1] * rinv, p.del[2] * rinv};
       const etd::FpmRandomForce random = etd::fpm_random_force(c, e, d.noise * isdt, p.noise);
-      for (int k = 0; k < 3; k++) EXPECT_EQ(random.central * e[k] + random.shear[k], pair.random[k]);
+      for (int k = 0; k < 3; k++)
+        EXPECT_EQ(random.central * e[k] + random.shear[k], pair.random[k]);
 
       const double w = std::pow(1.0 - r / rc, s);
       EXPECT_NEAR(d.central, special * gc * w, 1e-14 * gc);

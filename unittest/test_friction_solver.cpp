@@ -1,9 +1,9 @@
 // The implicit friction-noise step on its own (no LAMMPS): exact temperature at any step,
 // momentum conservation, solver accuracy, and the zero-mass limit.
+#include "conjugate_gradient.h"
 #include "dpd_kernel.h"
 #include "dpd_random.h"
 #include "fpm_kernel.h"
-#include "conjugate_gradient.h"
 #include "friction_operator.h"
 #include "friction_solve.h"
 
@@ -40,7 +40,9 @@ struct Cluster {
         }
         if (rsq >= 1.0) continue;
         const double r = std::sqrt(rsq);
-        etd::FrictionPair p{i, j, {float(d[0] / r), float(d[1] / r), float(d[2] / r)},
+        etd::FrictionPair p{i,
+                            j,
+                            {float(d[0] / r), float(d[1] / r), float(d[2] / r)},
                             float(gamma * etd::dissipative_weight(r, 1.0, s))};
         pairs.push_back(p);
         noise_amplitude.push_back(sigma * etd::random_weight(r, 1.0, s));
@@ -58,8 +60,11 @@ struct Cluster {
   }
 };
 
-const auto all_local = [](int) { return true; };
-const auto serial_sum = [](double *, int) {};    // one rank: the local sums are the sums
+const auto all_local = [](int) {
+  return true;
+};
+const auto serial_sum = [](double *, int) {
+};    // one rank: the local sums are the sums
 
 // One Pade friction-noise step of length h for masses m; returns CG iterations.
 int pade_step(const Cluster &c, double m, double h, long step, std::vector<double> &v,
@@ -82,8 +87,8 @@ int pade_step(const Cluster &c, double m, double h, long step, std::vector<doubl
   };
   std::vector<double> guess(n);
   for (int k = 0; k < n; k++) guess[k] = inv_diag[k] * b[k];
-  const auto result =
-      etd::conjugate_gradient(n, apply, serial_sum, inv_diag.data(), b.data(), guess.data(), tolerance, 500);
+  const auto result = etd::conjugate_gradient(n, apply, serial_sum, inv_diag.data(), b.data(),
+                                              guess.data(), tolerance, 500);
   EXPECT_TRUE(result.converged);
   v = guess;
   return result.iterations;
@@ -98,12 +103,20 @@ TEST(FrictionOperator, SymmetricPositiveSemidefiniteWithTranslationNullSpace)
   std::mt19937_64 gen(3);
   std::normal_distribution<double> normal;
   std::vector<double> u(n), w(n), gu(n, 0.0), gw(n, 0.0), uniform(n), gt(n, 0.0);
-  for (int k = 0; k < n; k++) { u[k] = normal(gen); w[k] = normal(gen); uniform[k] = (k % 3 == 1) ? 2.5 : 0.0; }
+  for (int k = 0; k < n; k++) {
+    u[k] = normal(gen);
+    w[k] = normal(gen);
+    uniform[k] = (k % 3 == 1) ? 2.5 : 0.0;
+  }
   etd::accumulate_friction(c.pairs, u.data(), gu.data(), all_local);
   etd::accumulate_friction(c.pairs, w.data(), gw.data(), all_local);
   etd::accumulate_friction(c.pairs, uniform.data(), gt.data(), all_local);
   double wgu = 0, ugw = 0, ugu = 0;
-  for (int k = 0; k < n; k++) { wgu += w[k] * gu[k]; ugw += u[k] * gw[k]; ugu += u[k] * gu[k]; }
+  for (int k = 0; k < n; k++) {
+    wgu += w[k] * gu[k];
+    ugw += u[k] * gw[k];
+    ugu += u[k] * gu[k];
+  }
   EXPECT_NEAR(wgu, ugw, 1e-10 * std::fabs(wgu));
   EXPECT_GT(ugu, 0.0);
   for (double g : gt) EXPECT_EQ(g, 0.0);    // a uniform translation costs no friction
@@ -126,7 +139,9 @@ TEST(FrictionOperator, RunByRunKernelIsThePairByPairSum)
   EXPECT_EQ(covered, static_cast<int>(c.pairs.size()));
   std::mt19937_64 gen(11);
   std::normal_distribution<double> normal;
-  const auto even_j_only = [](int j) { return j % 2 == 0; };
+  const auto even_j_only = [](int j) {
+    return j % 2 == 0;
+  };
   for (int stride : {3, 6}) {
     const int n = stride * c.natoms;
     std::vector<double> u(n);
@@ -139,18 +154,25 @@ TEST(FrictionOperator, RunByRunKernelIsThePairByPairSum)
         for (int k = 0; k < n; k++) start[k] = by_runs[k] = 0.1 * (k % 7) - 0.3;
       if (variant == 0) {
         etd::accumulate_friction(c.pairs, u.data(), by_pairs.data(), all_local, stride);
-        if (stride == 3) etd::accumulate_friction_by_runs<3>(c.pairs, runs, u.data(), by_runs.data(), all_local);
-        else etd::accumulate_friction_by_runs<6>(c.pairs, runs, u.data(), by_runs.data(), all_local);
+        if (stride == 3)
+          etd::accumulate_friction_by_runs<3>(c.pairs, runs, u.data(), by_runs.data(), all_local);
+        else
+          etd::accumulate_friction_by_runs<6>(c.pairs, runs, u.data(), by_runs.data(), all_local);
       } else {
         etd::accumulate_friction(c.pairs, u.data(), by_pairs.data(), even_j_only, stride);
-        if (stride == 3) etd::accumulate_friction_by_runs<3>(c.pairs, runs, u.data(), by_runs.data(), even_j_only, scale);
-        else etd::accumulate_friction_by_runs<6>(c.pairs, runs, u.data(), by_runs.data(), even_j_only, scale);
+        if (stride == 3)
+          etd::accumulate_friction_by_runs<3>(c.pairs, runs, u.data(), by_runs.data(), even_j_only,
+                                              scale);
+        else
+          etd::accumulate_friction_by_runs<6>(c.pairs, runs, u.data(), by_runs.data(), even_j_only,
+                                              scale);
       }
       double largest = 0.0;
       for (double value : by_pairs) largest = std::max(largest, std::fabs(value));
       ASSERT_GT(largest, 1.0);
       for (int k = 0; k < n; k++) {
-        EXPECT_NEAR(by_runs[k], start[k] + scale * by_pairs[k], 1e-12 * largest) << "stride " << stride << " value " << k;
+        EXPECT_NEAR(by_runs[k], start[k] + scale * by_pairs[k], 1e-12 * largest)
+            << "stride " << stride << " value " << k;
         if (stride == 6 && k % 6 >= 3) EXPECT_EQ(by_runs[k], start[k]);
       }
     }
@@ -177,7 +199,10 @@ TEST(FrictionOperator, PadeStepHoldsTemperatureAtAnyStep)
     std::mt19937_64 gen(11);
     std::normal_distribution<double> maxwell(0.0, std::sqrt(c.kT / m));
     double mean[3] = {0, 0, 0};
-    for (int k = 0; k < 3 * c.natoms; k++) { v[k] = maxwell(gen); mean[k % 3] += v[k] / c.natoms; }
+    for (int k = 0; k < 3 * c.natoms; k++) {
+      v[k] = maxwell(gen);
+      mean[k % 3] += v[k] / c.natoms;
+    }
     for (int k = 0; k < 3 * c.natoms; k++) v[k] -= mean[k % 3];
     double sum = 0.0;
     long samples = 0;
@@ -193,7 +218,8 @@ TEST(FrictionOperator, PadeStepHoldsTemperatureAtAnyStep)
       samples += 3 * c.natoms;
     }
     const double kT = sum / samples;
-    std::printf("Pade step h = %g m/gamma: <m v^2> = %.4f kBT, %d CG iterations\n", ratio, kT, iterations);
+    std::printf("Pade step h = %g m/gamma: <m v^2> = %.4f kBT, %d CG iterations\n", ratio, kT,
+                iterations);
     EXPECT_NEAR(kT, c.kT * (c.natoms - 1) / c.natoms, 0.015) << "h = " << ratio << " m/gamma";
   }
 }
@@ -205,18 +231,25 @@ TEST(FrictionOperator, ConjugateGradientSolvesToTolerance)
   const double m = 0.001, h = 0.01;
   std::vector<double> diag(n, 0.0), inv_diag(n), b(n), x(n, 0.0);
   etd::accumulate_diagonal(c.pairs, diag.data(), all_local);
-  for (int k = 0; k < n; k++) { inv_diag[k] = 1.0 / (m + 0.5 * h * diag[k]); b[k] = std::sin(k); }
+  for (int k = 0; k < n; k++) {
+    inv_diag[k] = 1.0 / (m + 0.5 * h * diag[k]);
+    b[k] = std::sin(k);
+  }
   auto apply = [&](const double *u, double *au) {
     std::vector<double> gu(n, 0.0);
     etd::accumulate_friction(c.pairs, u, gu.data(), all_local);
     for (int k = 0; k < n; k++) au[k] = m * u[k] + 0.5 * h * gu[k];
   };
-  const auto result = etd::conjugate_gradient(n, apply, serial_sum, inv_diag.data(), b.data(), x.data(), 1e-12, 1000);
+  const auto result = etd::conjugate_gradient(n, apply, serial_sum, inv_diag.data(), b.data(),
+                                              x.data(), 1e-12, 1000);
   ASSERT_TRUE(result.converged);
   std::vector<double> ax(n);
   apply(x.data(), ax.data());
   double err = 0, norm = 0;
-  for (int k = 0; k < n; k++) { err += (ax[k] - b[k]) * (ax[k] - b[k]); norm += b[k] * b[k]; }
+  for (int k = 0; k < n; k++) {
+    err += (ax[k] - b[k]) * (ax[k] - b[k]);
+    norm += b[k] * b[k];
+  }
   EXPECT_LT(std::sqrt(err / norm), 1e-12);
   EXPECT_LE(result.relative_residual, 1e-12);
 }
@@ -231,24 +264,35 @@ TEST(FrictionOperator, ConjugateGradientNeedsOneReductionPerIteration)
   const double m = 0.001, h = 0.01;
   std::vector<double> diag(n, 0.0), inv_diag(n), b(n);
   etd::accumulate_diagonal(c.pairs, diag.data(), all_local);
-  for (int k = 0; k < n; k++) { inv_diag[k] = 1.0 / (m + 0.5 * h * diag[k]); b[k] = std::cos(0.7 * k); }
+  for (int k = 0; k < n; k++) {
+    inv_diag[k] = 1.0 / (m + 0.5 * h * diag[k]);
+    b[k] = std::cos(0.7 * k);
+  }
   auto apply = [&](const double *u, double *au) {
     std::vector<double> gu(n, 0.0);
     etd::accumulate_friction(c.pairs, u, gu.data(), all_local);
     for (int k = 0; k < n; k++) au[k] = m * u[k] + 0.5 * h * gu[k];
   };
   int reductions = 0;
-  auto counting_sum = [&](double *, int) { reductions++; };
+  auto counting_sum = [&](double *, int) {
+    reductions++;
+  };
   for (double tolerance : {1e-4, 1e-8}) {
     std::vector<double> x(n, 0.0);
     reductions = 0;
-    const auto result = etd::conjugate_gradient(n, apply, counting_sum, inv_diag.data(), b.data(), x.data(), tolerance, 1000);
+    const auto result = etd::conjugate_gradient(n, apply, counting_sum, inv_diag.data(), b.data(),
+                                                x.data(), tolerance, 1000);
     ASSERT_TRUE(result.converged);
     EXPECT_LE(reductions, result.iterations + 2) << "tol " << tolerance;
     // textbook Jacobi-preconditioned CG from zero
     std::vector<double> y(n, 0.0), r = b, z(n), p(n), ap(n);
     double rz = 0.0, bb = 0.0;
-    for (int k = 0; k < n; k++) { z[k] = inv_diag[k] * r[k]; p[k] = z[k]; rz += r[k] * z[k]; bb += b[k] * b[k]; }
+    for (int k = 0; k < n; k++) {
+      z[k] = inv_diag[k] * r[k];
+      p[k] = z[k];
+      rz += r[k] * z[k];
+      bb += b[k] * b[k];
+    }
     int textbook = 0;
     for (double rr = bb; rr > tolerance * tolerance * bb; textbook++) {
       apply(p.data(), ap.data());
@@ -273,9 +317,11 @@ TEST(FrictionOperator, ConjugateGradientNeedsOneReductionPerIteration)
     for (int k = 0; k < n; k++) start[k] = 0.1 * std::sin(k);
     apply(start.data(), product.data());
     std::vector<double> x1 = start, x2 = start;
-    const auto own = etd::conjugate_gradient(n, apply, serial_sum, inv_diag.data(), b.data(), x1.data(), tolerance, 1000);
-    const auto given = etd::conjugate_gradient(n, apply, serial_sum, inv_diag.data(), b.data(), x2.data(), tolerance, 1000,
-                                               nullptr, etd::NoProjection(), nullptr, product.data());
+    const auto own = etd::conjugate_gradient(n, apply, serial_sum, inv_diag.data(), b.data(),
+                                             x1.data(), tolerance, 1000);
+    const auto given = etd::conjugate_gradient(n, apply, serial_sum, inv_diag.data(), b.data(),
+                                               x2.data(), tolerance, 1000, nullptr,
+                                               etd::NoProjection(), nullptr, product.data());
     EXPECT_EQ(own.iterations, given.iterations);
     for (int k = 0; k < n; k++) EXPECT_NEAR(x1[k], x2[k], 1e-12 * (1.0 + std::fabs(x1[k])));
   }
@@ -298,7 +344,8 @@ TEST(FrictionOperator, ZeroMassLimitMatchesOverdampedSolve)
     for (int k = 0; k < n; k++) gu[k] = 0.0;
     etd::accumulate_friction(pairs, u, gu, all_local);
   };
-  auto result = etd::conjugate_gradient(n, apply_g, serial_sum, inv_diag.data(), b.data(), overdamped.data(), 1e-12, 2000);
+  auto result = etd::conjugate_gradient(n, apply_g, serial_sum, inv_diag.data(), b.data(),
+                                        overdamped.data(), 1e-12, 2000);
   ASSERT_TRUE(result.converged);
   std::vector<double> differences;
   for (double m : {1e-4, 1e-6}) {
@@ -313,9 +360,14 @@ TEST(FrictionOperator, ZeroMassLimitMatchesOverdampedSolve)
       etd::accumulate_friction(pairs, u, gu.data(), all_local);
       for (int k = 0; k < n; k++) au[k] = m * u[k] + 0.5 * h * gu[k];
     };
-    ASSERT_TRUE(etd::conjugate_gradient(n, apply_a, serial_sum, id.data(), rhs.data(), x.data(), 1e-12, 5000).converged);
+    ASSERT_TRUE(etd::conjugate_gradient(n, apply_a, serial_sum, id.data(), rhs.data(), x.data(),
+                                        1e-12, 5000)
+                    .converged);
     double mean_a[3] = {0, 0, 0}, mean_o[3] = {0, 0, 0};
-    for (int k = 0; k < n; k++) { mean_a[k % 3] += x[k] / c.natoms; mean_o[k % 3] += overdamped[k] / c.natoms; }
+    for (int k = 0; k < n; k++) {
+      mean_a[k % 3] += x[k] / c.natoms;
+      mean_o[k % 3] += overdamped[k] / c.natoms;
+    }
     double diff = 0, norm = 0;
     for (int k = 0; k < n; k++) {
       const double a = 0.5 * (x[k] - mean_a[k % 3]), o = overdamped[k] - mean_o[k % 3];
@@ -323,7 +375,8 @@ TEST(FrictionOperator, ZeroMassLimitMatchesOverdampedSolve)
       norm += o * o;
     }
     differences.push_back(std::sqrt(diff / norm));
-    std::printf("m = %g: relative difference to the overdamped velocities %.2e\n", m, differences.back());
+    std::printf("m = %g: relative difference to the overdamped velocities %.2e\n", m,
+                differences.back());
   }
   // the difference is O(m): (2M/h) against the smallest eigenvalues of G
   EXPECT_LT(differences[1], differences[0] / 50.0);
@@ -373,7 +426,9 @@ TEST(FrictionOperator, FpmPairOperatorIsTheKernelsFriction)
   p.central = static_cast<float>(c.gamma_c * w);
   p.shear = static_cast<float>(c.gamma_s * w);
   const std::vector<etd::FpmFrictionPair> pairs = {p};
-  auto all = [](int) { return true; };
+  auto all = [](int) {
+    return true;
+  };
 
   std::vector<double> q(12), gq(12, 0.0);
   for (double &value : q) value = normal(gen);
@@ -384,18 +439,22 @@ TEST(FrictionOperator, FpmPairOperatorIsTheKernelsFriction)
   const double v_ij[3] = {q[0] - q[6], q[1] - q[7], q[2] - q[8]};
   const double spin[3] = {q[3] + q[9], q[4] + q[10], q[5] + q[11]};
   etd::FpmCoefficients exact = c;
-  const etd::FpmPairResult kernel = etd::fpm_pair(exact, d, 2 * p.half_r, v_ij, spin, etd::FpmNoise(), 1.0);
+  const etd::FpmPairResult kernel =
+      etd::fpm_pair(exact, d, 2 * p.half_r, v_ij, spin, etd::FpmNoise(), 1.0);
   const double scale = p.central / kernel.central_friction;    // float rounding of gamma w
   for (int k = 0; k < 3; k++) {
-    EXPECT_NEAR(gq[k], -kernel.dissipative[k] * scale, 1e-5 * std::fabs(kernel.dissipative[k]) + 1e-6);
-    EXPECT_NEAR(gq[6 + k], kernel.dissipative[k] * scale, 1e-5 * std::fabs(kernel.dissipative[k]) + 1e-6);
+    EXPECT_NEAR(gq[k], -kernel.dissipative[k] * scale,
+                1e-5 * std::fabs(kernel.dissipative[k]) + 1e-6);
+    EXPECT_NEAR(gq[6 + k], kernel.dissipative[k] * scale,
+                1e-5 * std::fabs(kernel.dissipative[k]) + 1e-6);
     EXPECT_NEAR(gq[3 + k], -kernel.torque[k] * scale, 1e-5 * std::fabs(kernel.torque[k]) + 1e-6);
     EXPECT_NEAR(gq[9 + k], -kernel.torque[k] * scale, 1e-5 * std::fabs(kernel.torque[k]) + 1e-6);
   }
   // a weight on G (what the solver adds into M q) scales every component
   std::vector<double> weighted(12, 1.0);
   etd::accumulate_fpm_friction(pairs, q.data(), weighted.data(), all, 0.3);
-  for (int k = 0; k < 12; k++) EXPECT_NEAR(weighted[k], 1.0 + 0.3 * gq[k], 1e-12 * (1.0 + std::fabs(gq[k])));
+  for (int k = 0; k < 12; k++)
+    EXPECT_NEAR(weighted[k], 1.0 + 0.3 * gq[k], 1e-12 * (1.0 + std::fabs(gq[k])));
   // symmetric and positive semidefinite
   std::vector<double> y(12), gy(12, 0.0);
   for (double &value : y) value = normal(gen);
@@ -473,23 +532,27 @@ TEST(FrictionSolve, InertialSystemToToleranceFromEitherStart)
   sys.blocks = s.blocks.data();
   sys.mass_weight = 1.0;
   sys.friction_weight = 0.5 * 0.003;
-  auto apply = [&](const double *u, double *out, double w) { s.apply_friction(u, out, w); };
-  const auto mobile = [](int) { return true; };
+  auto apply = [&](const double *u, double *out, double w) {
+    s.apply_friction(u, out, w);
+  };
+  const auto mobile = [](int) {
+    return true;
+  };
   etd::FrictionSolveWorkspace work;
   std::vector<double> cold, warm, warm_product;
-  const etd::SolverResult a = etd::solve_friction_system(sys, mobile, apply, serial_sum, s.rhs.data(), cold,
-                                                         1e-10, 500, work);
+  const etd::SolverResult a = etd::solve_friction_system(sys, mobile, apply, serial_sum,
+                                                         s.rhs.data(), cold, 1e-10, 500, work);
   ASSERT_TRUE(a.converged);
   EXPECT_LT(s.relative_residual(sys, cold, s.rhs), 1e-9);
   // a start near the answer, with and without its G product supplied
   std::vector<double> start = cold, start_friction(s.n, 0.0);
   for (int k = 0; k < s.n; k++) start[k] *= 1.0 + 0.01 * std::sin(k);
   s.apply_friction(start.data(), start_friction.data(), 1.0);
-  const etd::SolverResult b = etd::solve_friction_system(sys, mobile, apply, serial_sum, s.rhs.data(), warm,
-                                                         1e-10, 500, work, start.data());
-  const etd::SolverResult c = etd::solve_friction_system(sys, mobile, apply, serial_sum, s.rhs.data(),
-                                                         warm_product, 1e-10, 500, work, start.data(),
-                                                         start_friction.data());
+  const etd::SolverResult b = etd::solve_friction_system(
+      sys, mobile, apply, serial_sum, s.rhs.data(), warm, 1e-10, 500, work, start.data());
+  const etd::SolverResult c =
+      etd::solve_friction_system(sys, mobile, apply, serial_sum, s.rhs.data(), warm_product, 1e-10,
+                                 500, work, start.data(), start_friction.data());
   ASSERT_TRUE(b.converged && c.converged);
   EXPECT_LT(b.iterations, a.iterations) << "a start 1 % from the answer should save iterations";
   EXPECT_EQ(b.iterations, c.iterations);
@@ -502,7 +565,9 @@ TEST(FrictionSolve, InertialSystemToToleranceFromEitherStart)
 TEST(FrictionSolve, HeldBlocksStayZeroAndZeroMassLimitIsDeflated)
 {
   SolveSetup s;
-  auto apply = [&](const double *u, double *out, double w) { s.apply_friction(u, out, w); };
+  auto apply = [&](const double *u, double *out, double w) {
+    s.apply_friction(u, out, w);
+  };
   etd::FrictionSolveWorkspace work;
   etd::FrictionSystem sys;
   sys.n = s.n;
@@ -511,9 +576,12 @@ TEST(FrictionSolve, HeldBlocksStayZeroAndZeroMassLimitIsDeflated)
   sys.mass_weight = 1.0;
   sys.friction_weight = 0.01;
   // every seventh atom outside the group: its velocity stays exactly zero
-  const auto some_held = [](int block) { return block % 7 != 0; };
+  const auto some_held = [](int block) {
+    return block % 7 != 0;
+  };
   std::vector<double> x;
-  ASSERT_TRUE(etd::solve_friction_system(sys, some_held, apply, serial_sum, s.rhs.data(), x, 1e-10, 500, work)
+  ASSERT_TRUE(etd::solve_friction_system(sys, some_held, apply, serial_sum, s.rhs.data(), x, 1e-10,
+                                         500, work)
                   .converged);
   for (int b = 0; b < s.n / 3; b += 7)
     for (int k = 0; k < 3; k++) EXPECT_EQ(x[3 * b + k], 0.0) << "held atom " << b;
@@ -523,9 +591,12 @@ TEST(FrictionSolve, HeldBlocksStayZeroAndZeroMassLimitIsDeflated)
   sys.mass_weight = 0.0;
   sys.friction_weight = 1.0;
   sys.deflate = true;
-  const auto mobile = [](int) { return true; };
-  ASSERT_TRUE(etd::solve_friction_system(sys, mobile, apply, serial_sum, s.rhs.data(), x, 1e-10, 2000, work)
-                  .converged);
+  const auto mobile = [](int) {
+    return true;
+  };
+  ASSERT_TRUE(
+      etd::solve_friction_system(sys, mobile, apply, serial_sum, s.rhs.data(), x, 1e-10, 2000, work)
+          .converged);
   std::vector<double> centred = s.rhs;
   for (int k = 0; k < 3; k++) {
     double mean_b = 0.0, mean_x = 0.0;

@@ -191,7 +191,9 @@ TEST(KineticTheory, FeasibilityBound)
   EXPECT_NEAR(design_from_schmidt(paper_fluid, 30.0, 1.001 * sc_min).s, 0.0, 1e-2);
   EXPECT_NEAR(max_viscosity_for_schmidt(paper_fluid, 500.0), std::sqrt(3.0 * 16 * 2.25 * 10.0),
               1e-12);
-  EXPECT_FALSE(design_from_schmidt(paper_fluid, 1.0001 * max_viscosity_for_schmidt(paper_fluid, 500), 500).feasible);
+  EXPECT_FALSE(
+      design_from_schmidt(paper_fluid, 1.0001 * max_viscosity_for_schmidt(paper_fluid, 500), 500)
+          .feasible);
 
   // the tau_P forms of the same bound (eqs 55-56 of the TCAF paper)
   const double tau_min = min_particle_diffusion_time(paper_fluid, 30.0);

@@ -17,7 +17,10 @@ long double phi1_reference(long double z)
 {
   if (std::fabs(z) <= 1.0L) {
     long double term = 1.0L, sum = 1.0L;
-    for (int k = 1; k < 40; ++k) { term *= z / (k + 1); sum += term; }
+    for (int k = 1; k < 40; ++k) {
+      term *= z / (k + 1);
+      sum += term;
+    }
     return sum;
   }
   return std::expm1(z) / z;
@@ -27,7 +30,10 @@ long double phi2_reference(long double z)
 {
   if (std::fabs(z) <= 1.0L) {
     long double term = 0.5L, sum = 0.5L;
-    for (int k = 1; k < 40; ++k) { term *= z / (k + 2); sum += term; }
+    for (int k = 1; k < 40; ++k) {
+      term *= z / (k + 2);
+      sum += term;
+    }
     return sum;
   }
   return (std::expm1(z) - z) / (z * z);
@@ -35,8 +41,8 @@ long double phi2_reference(long double z)
 
 std::vector<double> z_grid()
 {
-  std::vector<double> zs = {0.0, -1e-300, -1e-17, -1e-12, -1e-8, -1e-5, -1e-3, -0.1, -0.5,
-                            -0.999, -1.0, -1.001, -2.0, -10.0, -50.0, -300.0, -700.0};
+  std::vector<double> zs = {0.0,    -1e-300, -1e-17, -1e-12, -1e-8, -1e-5, -1e-3,  -0.1,  -0.5,
+                            -0.999, -1.0,    -1.001, -2.0,   -10.0, -50.0, -300.0, -700.0};
   for (double z = -1e-6; z > -700.0; z *= 1.37) zs.push_back(z);
   return zs;
 }
@@ -47,7 +53,8 @@ TEST(EtdCoefficients, Phi1AccurateFromZeroToMinus700)
 {
   for (double z : z_grid()) {
     const long double ref = phi1_reference(z);
-    EXPECT_NEAR(etd::phi1(z), static_cast<double>(ref), 1e-14 * std::fabs(static_cast<double>(ref))) << "z=" << z;
+    EXPECT_NEAR(etd::phi1(z), static_cast<double>(ref), 1e-14 * std::fabs(static_cast<double>(ref)))
+        << "z=" << z;
   }
   EXPECT_EQ(etd::phi1(0.0), 1.0);
 }
@@ -56,7 +63,8 @@ TEST(EtdCoefficients, Phi2AccurateFromZeroToMinus700)
 {
   for (double z : z_grid()) {
     const long double ref = phi2_reference(z);
-    EXPECT_NEAR(etd::phi2(z), static_cast<double>(ref), 1e-14 * std::fabs(static_cast<double>(ref))) << "z=" << z;
+    EXPECT_NEAR(etd::phi2(z), static_cast<double>(ref), 1e-14 * std::fabs(static_cast<double>(ref)))
+        << "z=" << z;
   }
   EXPECT_EQ(etd::phi2(0.0), 0.5);
 }
@@ -133,7 +141,8 @@ TEST(EtdCoefficients, SharedExpm1MatchesDirectFormulas)
       EXPECT_NEAR(c.current, dt * (etd::phi1(z) + p2), 1e-14 * std::fabs(c.current));
       EXPECT_NEAR(c.previous, -dt * p2, 1e-14 * std::fabs(dt * p2));
       EXPECT_NEAR(c.noise_piecewise, dt * etd::phi1(z), 1e-14 * dt * etd::phi1(z));
-      EXPECT_NEAR(c.noise_exact, dt * etd::ou_noise_factor(z), 1e-14 * dt * etd::ou_noise_factor(z));
+      EXPECT_NEAR(c.noise_exact, dt * etd::ou_noise_factor(z),
+                  1e-14 * dt * etd::ou_noise_factor(z));
     }
   }
 }
@@ -152,7 +161,8 @@ TEST(EtdCoefficients, FirstOrderEffectiveStepIsTheFullUpdate)
       for (double force : {-40.0, 2.5}) {
         const double full = c.decay * v + c.current * (force + gamma * v) / m;
         const double cheap = v + h * force / m;
-        EXPECT_NEAR(cheap, full, 1e-12 * (std::fabs(full) + std::fabs(v) + dt * std::fabs(force) / m))
+        EXPECT_NEAR(cheap, full,
+                    1e-12 * (std::fabs(full) + std::fabs(v) + dt * std::fabs(force) / m))
             << "gamma=" << gamma << " v=" << v << " F=" << force;
       }
   }
@@ -243,8 +253,8 @@ TEST(PairKernel, DissipativeWeights)
 {
   for (double s : {0.25, 0.4244, 0.5, 1.0, 1.5, 2.0, 3.7})
     for (double q : {0.0, 0.01, 0.3, 0.99, 1.0}) {
-      const etd::DissipativeWeights w = etd::dissipative_weights(
-          q, etd::classify_power(s), etd::classify_power(0.5 * s), s);
+      const etd::DissipativeWeights w =
+          etd::dissipative_weights(q, etd::classify_power(s), etd::classify_power(0.5 * s), s);
       EXPECT_NEAR(w.random, std::pow(q, 0.5 * s), 1e-15);
       EXPECT_NEAR(w.dissipative, std::pow(q, s), 1e-15);
       EXPECT_EQ(w.dissipative, w.random * w.random);    // for s = 2 too: w_R is q there
@@ -259,9 +269,11 @@ TEST(PairKernel, EnergyIsIntegralOfConservativeForce)
     for (double r = 0.05; r < 1.29; r += 0.0731) {
       const double h = 1e-6;
       const double fd = -(etd::pair_energy(c, (r + h) * (r + h), r + h) -
-                          etd::pair_energy(c, (r - h) * (r - h), r - h)) / (2 * h);
+                          etd::pair_energy(c, (r - h) * (r - h), r - h)) /
+          (2 * h);
       const auto f = etd::pair_force(c, r * r, r, 0.0, 0.0, 1.0);
-      EXPECT_NEAR(fd, f.conservative, 1e-6 * (1 + std::fabs(f.conservative))) << "p=" << p << " r=" << r;
+      EXPECT_NEAR(fd, f.conservative, 1e-6 * (1 + std::fabs(f.conservative)))
+          << "p=" << p << " r=" << r;
     }
     EXPECT_EQ(etd::pair_energy(c, 1.3 * 1.3, 1.3), 0.0);
   }
@@ -288,7 +300,11 @@ TEST(PairNoise, UnitGaussianMoments)
   long inner = 0, tail = 0;
   for (int k = 0; k < n; k++) {
     const double g = noise.gaussian(k % 997 + 1, k / 997 + 2000, k % 13);
-    s1 += g; s2 += g * g; s4 += g * g * g * g; lag += g * prev; prev = g;
+    s1 += g;
+    s2 += g * g;
+    s4 += g * g * g * g;
+    lag += g * prev;
+    prev = g;
     inner += std::fabs(g) < 0.5;
     tail += std::fabs(g) > 2.0;
   }

@@ -23,9 +23,9 @@ void setup_box(Lammps &l, const std::string &newton = "on", const std::string &b
 {
   etdtest::write_random_sphere_data(DATA, 648, 6.0, 4711, 2, 1.5, 2.0, 1.0);
   l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "boundary " + boundary,
-          "newton " + newton, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + DATA, "set group all mass 1.0",
-          "timestep 0.01", "thermo_modify norm no", "compute virial all pressure NULL virial",
-          "compute tq all property/atom tqx tqy tqz"});
+          "newton " + newton, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
+          "read_data " + DATA, "set group all mass 1.0", "timestep 0.01", "thermo_modify norm no",
+          "compute virial all pressure NULL virial", "compute tq all property/atom tqx tqy tqz"});
 }
 
 double max_rel_diff(const std::vector<double> &a, const std::vector<double> &b)
@@ -183,7 +183,8 @@ TEST(PairDpdFpm, ForceSplitAndFrictionAreConsistent)
   split = l.gather_compute("split", 9);
   double dissipative = 0.0;
   for (size_t a = 0; a < f.size() / 3; a++)
-    for (int k = 0; k < 3; k++) dissipative = std::max(dissipative, std::fabs(split[9 * a + 3 + k]));
+    for (int k = 0; k < 3; k++)
+      dissipative = std::max(dissipative, std::fabs(split[9 * a + 3 + k]));
   EXPECT_GT(dissipative, 0.1);
 }
 
@@ -194,12 +195,12 @@ TEST(PairDpdFpm, FixEtdUsesTheRotationalFrictionDiagonal)
   // -G (w1 + w2). The ETD update then gives w1' = e^z w1 and w2' = -(1 - e^z) w1 with
   // z = -G dt / I: an explicit update would give 1 - G dt/I instead of e^z.
   Lammps l;
-  l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
-          "region box block 0 10 0 10 0 10", "create_box 1 box", "create_atoms 1 single 5 5 5",
-          "create_atoms 1 single 5.6 5 5", "set group all diameter 0.5", "set group all mass 2.0",
-          "group first id 1", "set group first omega 0 0 3.0", "timestep 0.2",
-          "pair_style dpd/fpm 0.0 1.0 7", "pair_coeff 1 1 0.0 0.0 8.0 0.5", "fix 1 all etd",
-          "run 1 post no"});
+  l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "region box block 0 10 0 10 0 10",
+          "create_box 1 box", "create_atoms 1 single 5 5 5", "create_atoms 1 single 5.6 5 5",
+          "set group all diameter 0.5", "set group all mass 2.0", "group first id 1",
+          "set group first omega 0 0 3.0", "timestep 0.2", "pair_style dpd/fpm 0.0 1.0 7",
+          "pair_coeff 1 1 0.0 0.0 8.0 0.5", "fix 1 all etd", "run 1 post no"});
   auto w = l.gather("omega");
   const double G = 8.0 * std::sqrt(0.4) * 0.09, inertia = 0.4 * 2.0 * 0.0625;
   const double decay = std::exp(-G * 0.2 / inertia);
@@ -220,8 +221,8 @@ TEST(PairDpdFpm, FixEtdKeepsStiffRotationNearEquilibrium)
   l.cmds({"set group all diameter 0.3", "pair_style dpd/fpm 1.0 1.0 5",
           "pair_coeff * * 25 4.5 4.5 0.5", "velocity all create 1.0 77 dist gaussian",
           "compute rot all erotate/sphere", "variable trot equal c_rot/(1.5*atoms)",
-          "fix 1 all etd", "run 200 post no", "reset_timestep 0", "fix avg all ave/time 10 30 300 v_trot c_thermo_temp",
-          "run 300 post no"});
+          "fix 1 all etd", "run 200 post no", "reset_timestep 0",
+          "fix avg all ave/time 10 30 300 v_trot c_thermo_temp", "run 300 post no"});
   const double rotational_kT = l.fix_vector("avg", 0), kT = l.fix_vector("avg", 1);
   std::printf("fix etd, diameter 0.3: kBT = %.4f, rotational kBT = %.4f\n", kT, rotational_kT);
   EXPECT_GT(rotational_kT, 0.6);
@@ -245,8 +246,9 @@ TEST(PairDpdFpm, RestartContinuesExactly)
       w_ref = l.gather("omega");
     }
     Lammps l;
-    l.cmds({"read_restart " + restart, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "timestep 0.01",
-            "fix 1 all " + integrator, "run 20"});
+    l.cmds({"read_restart " + restart, "comm_modify vel yes",
+            "neigh_modify every 1 delay 0 check yes", "timestep 0.01", "fix 1 all " + integrator,
+            "run 20"});
     EXPECT_LT(max_rel_diff(l.gather("x"), x_ref), 1e-13) << integrator;
     EXPECT_LT(max_rel_diff(l.gather("v"), v_ref), 1e-13) << integrator;
     EXPECT_LT(max_rel_diff(l.gather("omega"), w_ref), 1e-13) << integrator;
@@ -266,9 +268,10 @@ TEST(PairDpdFpm, WriteDataRoundTripsPerPairSettings)
     l.cmd("write_data " + data + " pair ij");
   }
   Lammps l;
-  l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
-          "pair_style dpd/fpm 1.0 1.0 31", "read_data " + data, "timestep 0.01",
-          "compute virial all pressure NULL virial", "compute tq all property/atom tqx tqy tqz"});
+  l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "pair_style dpd/fpm 1.0 1.0 31",
+          "read_data " + data, "timestep 0.01", "compute virial all pressure NULL virial",
+          "compute tq all property/atom tqx tqy tqz"});
   const Snapshot back = snapshot(l);
   EXPECT_LT(max_rel_diff(back.f, ref.f), 1e-13);
   EXPECT_LT(max_rel_diff(back.torque, ref.torque), 1e-13);
@@ -310,11 +313,11 @@ TEST(PairDpdFpm, ForcesAndTorquesAgreeAcrossRankCountsAndNewton)
       if (ranks > etdtest::world_size()) continue;
       results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
         l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "newton " + newton,
-                "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + data, "set group all mass 1.0",
-                "timestep 0.005", "pair_style dpd/fpm 1.0 1.0 2718",
-                "pair_coeff * * 25 4.5 4.5 0.5", "pair_coeff 1 2 25 3.5 5.5 0.5",
-                "compute tq all property/atom tqx tqy tqz", "fix 1 all nve/sphere",
-                "run 5 post no"});
+                "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
+                "read_data " + data, "set group all mass 1.0", "timestep 0.005",
+                "pair_style dpd/fpm 1.0 1.0 2718", "pair_coeff * * 25 4.5 4.5 0.5",
+                "pair_coeff 1 2 25 3.5 5.5 0.5", "compute tq all property/atom tqx tqy tqz",
+                "fix 1 all nve/sphere", "run 5 post no"});
         auto out = l.gather("f");
         auto tq = l.gather_compute("tq", 3);
         auto w = l.gather("omega");
@@ -336,42 +339,62 @@ TEST(PairDpdFpm, ForcesAndTorquesAgreeAcrossRankCountsAndNewton)
 
 TEST(PairDpdFpm, BadInputGivesClearErrors)
 {
-  etdtest::expect_errors({
-      {{"pair_style dpd/fpm 1.0 1.0"}, "expected 3 arguments"},
-      {{"pair_style dpd/fpm -1.0 1.0 5"}, "temperature must be >= 0"},
-      {{"pair_style dpd/fpm 1.0 0.0 5"}, "cutoff must be > 0"},
-      {{"pair_style dpd/fpm 1.0 1.0 -3"}, "seed must be a positive integer"},
-      {{"pair_style dpd/fpm 1.0 1.0 abc"}, "'abc'"},    // LAMMPS parses the number: its wording is not ours; the argument is named
-      {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 4.5"}, "expected I J a gamma_C gamma_S s"},
-      {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 4.5 0.5 1.0 2.0"}, "expected I J a gamma_C gamma_S s"},
-      {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 -4.5 4.5 0.5"}, "gamma_C must be >= 0"},
-      {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 -4.5 0.5"}, "gamma_S must be >= 0"},
-      {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 4.5 0"}, "exponent s must be > 0"},
-      {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 4.5 0.5 -1"}, "cutoff must be > 0"},
-      {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 4.5 0.5", "run 0"}, ""},    // LAMMPS's own check: only that it stops
-      {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 4.5 0.5", "pair_coeff 2 2 25 4.5 4.5 0.5", "run 0"},
-       "types 1 2 are not set (no mixing)"},
-      {{"comm_modify vel no", "pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5", "run 0"}, "comm_modify vel yes"},
-      {{"pair_style hybrid dpd/fpm 1.0 1.0 5 zero 1.0", "pair_coeff * * dpd/fpm 25 4.5 4.5"}, "expected I J a gamma_C gamma_S s"},
-      {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5", "set atom 3 diameter 0.0", "fix 1 all etd", "run 1"},
-       "atom 3 has zero moment of inertia"},
-  }, [](Lammps &l) { setup_box(l); });
+  etdtest::expect_errors(
+      {
+          {{"pair_style dpd/fpm 1.0 1.0"}, "expected 3 arguments"},
+          {{"pair_style dpd/fpm -1.0 1.0 5"}, "temperature must be >= 0"},
+          {{"pair_style dpd/fpm 1.0 0.0 5"}, "cutoff must be > 0"},
+          {{"pair_style dpd/fpm 1.0 1.0 -3"}, "seed must be a positive integer"},
+          {{"pair_style dpd/fpm 1.0 1.0 abc"},
+           "'abc'"},    // LAMMPS parses the number: its wording is not ours; the argument is named
+          {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 4.5"},
+           "expected I J a gamma_C gamma_S s"},
+          {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 4.5 0.5 1.0 2.0"},
+           "expected I J a gamma_C gamma_S s"},
+          {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 -4.5 4.5 0.5"},
+           "gamma_C must be >= 0"},
+          {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 -4.5 0.5"},
+           "gamma_S must be >= 0"},
+          {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 4.5 0"},
+           "exponent s must be > 0"},
+          {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 4.5 0.5 -1"},
+           "cutoff must be > 0"},
+          {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 4.5 0.5", "run 0"},
+           ""},    // LAMMPS's own check: only that it stops
+          {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff 1 1 25 4.5 4.5 0.5",
+            "pair_coeff 2 2 25 4.5 4.5 0.5", "run 0"},
+           "types 1 2 are not set (no mixing)"},
+          {{"comm_modify vel no", "pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5",
+            "run 0"},
+           "comm_modify vel yes"},
+          {{"pair_style hybrid dpd/fpm 1.0 1.0 5 zero 1.0", "pair_coeff * * dpd/fpm 25 4.5 4.5"},
+           "expected I J a gamma_C gamma_S s"},
+          {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5",
+            "set atom 3 diameter 0.0", "fix 1 all etd", "run 1"},
+           "atom 3 has zero moment of inertia"},
+      },
+      [](Lammps &l) {
+        setup_box(l);
+      });
   // atom styles without angular velocity, and without atom IDs
   {
     Lammps l;
     etdtest::write_random_data(etdtest::work_file("dpd_fpm_atomic.data"), 100, 4.0, 3, 1, 1.0);
-    l.cmds({"units lj", "atom_style atomic", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
+    l.cmds({"units lj", "atom_style atomic", "comm_modify vel yes",
+            "neigh_modify every 1 delay 0 check yes",
             "read_data " + etdtest::work_file("dpd_fpm_atomic.data")});
     const std::string message =
         l.error_of({"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5", "run 0"});
-    EXPECT_NE(message.find("requires atoms with angular velocity and torque"), std::string::npos) << message;
+    EXPECT_NE(message.find("requires atoms with angular velocity and torque"), std::string::npos)
+        << message;
   }
   {
     Lammps l;
-    const std::string message = l.error_of(
-        {"units lj", "atom_style sphere", "atom_modify id no", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
-         "region box block 0 4 0 4 0 4", "create_box 1 box", "create_atoms 1 random 50 3 box",
-         "pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5", "run 0"});
+    const std::string message =
+        l.error_of({"units lj", "atom_style sphere", "atom_modify id no", "comm_modify vel yes",
+                    "neigh_modify every 1 delay 0 check yes", "region box block 0 4 0 4 0 4",
+                    "create_box 1 box", "create_atoms 1 random 50 3 box",
+                    "pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5", "run 0"});
     EXPECT_NE(message.find("requires atom IDs"), std::string::npos) << message;
   }
 }

@@ -19,9 +19,9 @@ const std::string DATA = etdtest::work_file("dpd_gen_config.data");
 void setup_box(Lammps &l, const std::string &newton = "on")
 {
   etdtest::write_random_data(DATA, 648, 6.0, 4711, 2, 1.5);
-  l.cmds({"units lj", "atom_modify map array", "newton " + newton, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
-          "read_data " + DATA, "mass * 1.0", "timestep 0.01", "thermo_modify norm no",
-          "compute virial all pressure NULL virial"});
+  l.cmds({"units lj", "atom_modify map array", "newton " + newton, "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "read_data " + DATA, "mass * 1.0",
+          "timestep 0.01", "thermo_modify norm no", "compute virial all pressure NULL virial"});
 }
 
 double max_rel_diff(const std::vector<double> &a, const std::vector<double> &b)
@@ -109,7 +109,8 @@ TEST(PairDpdGen, EnergyIsMinusIntegralOfConservativeForce)
         return e;
       };
       const double fd = -(energy_at(h) - energy_at(-h)) / (2 * h);
-      EXPECT_NEAR(fd, base.f[3 * (tag - 1) + k], 1e-5 * (1 + std::fabs(fd))) << "atom " << tag << axis;
+      EXPECT_NEAR(fd, base.f[3 * (tag - 1) + k], 1e-5 * (1 + std::fabs(fd)))
+          << "atom " << tag << axis;
     }
   }
 }
@@ -119,12 +120,14 @@ TEST(PairDpdGen, SeparateCutoffsActSeparately)
   // two atoms with relative velocity: at rcC < r < rcD only D and R act, at rcD < r < rcC only C
   for (int variant = 0; variant < 2; variant++) {
     Lammps l;
-    l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "region box block 0 10 0 10 0 10",
+    l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+            "neigh_modify every 1 delay 0 check yes", "region box block 0 10 0 10 0 10",
             "create_box 1 box", "create_atoms 1 single 5 5 5", "create_atoms 1 single 6.2 5 5",
             "mass 1 1.0", "velocity all set 0.3 0.2 0.1", "group first id 1",
             "velocity first set -0.5 0.0 0.0", "timestep 0.01",
             variant == 0 ? "pair_style dpd/gen 1.0 1.0 9" : "pair_style dpd/gen 1.0 1.5 9",
-            variant == 0 ? "pair_coeff 1 1 25 4.5 0.5 1.0 cut_d 1.5" : "pair_coeff 1 1 25 4.5 0.5 1.5 cut_d 1.0",
+            variant == 0 ? "pair_coeff 1 1 25 4.5 0.5 1.0 cut_d 1.5"
+                         : "pair_coeff 1 1 25 4.5 0.5 1.5 cut_d 1.0",
             "compute split all dpd/split", "thermo_style custom step c_split[1]", "run 0 post no"});
     auto split = l.gather_compute("split", 9);
     const double fc = split[0], fd = split[3], fr = split[6];
@@ -147,13 +150,16 @@ TEST(PairDpdGen, RandomForcesSumToZeroAndHaveTheRightVariance)
 {
   // 400 isolated pairs at r = 0.4 with zero relative velocity: F = sigma w_R theta / sqrt(dt)
   Lammps l;
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "region box block 0 40 0 40 0 20",
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "region box block 0 40 0 40 0 20",
           "create_box 1 box", "mass 1 1.0", "timestep 0.004"});
   for (int i = 0; i < 20; i++)
     for (int j = 0; j < 20; j++) {
       const double x = 1 + 2 * i, y = 1 + 2 * j, z = 1 + (i + j) % 9 * 2;
-      l.cmd("create_atoms 1 single " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z));
-      l.cmd("create_atoms 1 single " + std::to_string(x + 0.4) + " " + std::to_string(y) + " " + std::to_string(z));
+      l.cmd("create_atoms 1 single " + std::to_string(x) + " " + std::to_string(y) + " " +
+            std::to_string(z));
+      l.cmd("create_atoms 1 single " + std::to_string(x + 0.4) + " " + std::to_string(y) + " " +
+            std::to_string(z));
     }
   const double T = 1.3, gamma = 4.5, s = 0.5, dt = 0.004;
   l.cmds({"pair_style dpd/gen 1.3 1.0 77", "pair_coeff 1 1 0.0 4.5 0.5"});
@@ -166,9 +172,16 @@ TEST(PairDpdGen, RandomForcesSumToZeroAndHaveTheRightVariance)
     auto f = l.gather("f");
     double total[3] = {0, 0, 0}, scale = 0;
     for (size_t a = 0; a < f.size() / 3; a++)
-      for (int k = 0; k < 3; k++) { total[k] += f[3 * a + k]; scale = std::max(scale, std::fabs(f[3 * a + k])); }
+      for (int k = 0; k < 3; k++) {
+        total[k] += f[3 * a + k];
+        scale = std::max(scale, std::fabs(f[3 * a + k]));
+      }
     for (int k = 0; k < 3; k++) EXPECT_LT(std::fabs(total[k]), 1e-12 * scale * f.size());
-    for (size_t a = 0; a < f.size() / 3; a += 2) { sum += f[3 * a]; sumsq += f[3 * a] * f[3 * a]; count++; }
+    for (size_t a = 0; a < f.size() / 3; a += 2) {
+      sum += f[3 * a];
+      sumsq += f[3 * a] * f[3 * a];
+      count++;
+    }
   }
   // 10,000 samples: the variance's relative standard error is sqrt(2/N) = 1.4 %; allow 5 of them
   const double var = sumsq / count - (sum / count) * (sum / count);
@@ -185,8 +198,12 @@ TEST(PairDpdGen, NewtonOffConservesMomentumExactly)
     auto f = l.gather("f");
     double total[3] = {0, 0, 0}, scale = 0;
     for (size_t a = 0; a < f.size() / 3; a++)
-      for (int k = 0; k < 3; k++) { total[k] += f[3 * a + k]; scale = std::max(scale, std::fabs(f[3 * a + k])); }
-    for (int k = 0; k < 3; k++) EXPECT_LT(std::fabs(total[k]), 1e-11 * scale) << "newton " << newton;
+      for (int k = 0; k < 3; k++) {
+        total[k] += f[3 * a + k];
+        scale = std::max(scale, std::fabs(f[3 * a + k]));
+      }
+    for (int k = 0; k < 3; k++)
+      EXPECT_LT(std::fabs(total[k]), 1e-11 * scale) << "newton " << newton;
   }
 }
 
@@ -199,13 +216,15 @@ TEST(PairDpdGen, RestartContinuesExactly)
   {
     Lammps l;
     setup_box(l);
-    l.cmds({"pair_style dpd/gen 1.0 1.0 31", "pair_coeff * * 25 4.5 0.5", "pair_coeff 1 2 30 5 2 1.1 cut_d 0.9 exp_c 0.5",
-            "fix 1 all nve", "run 20", "write_restart " + restart, "run 20"});
+    l.cmds({"pair_style dpd/gen 1.0 1.0 31", "pair_coeff * * 25 4.5 0.5",
+            "pair_coeff 1 2 30 5 2 1.1 cut_d 0.9 exp_c 0.5", "fix 1 all nve", "run 20",
+            "write_restart " + restart, "run 20"});
     x_ref = l.gather("x");
     v_ref = l.gather("v");
   }
   Lammps l;
-  l.cmds({"read_restart " + restart, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "timestep 0.01", "fix 1 all nve", "run 20"});
+  l.cmds({"read_restart " + restart, "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "timestep 0.01", "fix 1 all nve", "run 20"});
   EXPECT_LT(max_rel_diff(l.gather("x"), x_ref), 1e-13);
   EXPECT_LT(max_rel_diff(l.gather("v"), v_ref), 1e-13);
 }
@@ -223,7 +242,8 @@ TEST(PairDpdGen, WriteDataRoundTripsPerPairSettings)
     f_ref = l.gather("f");
   }
   Lammps l;
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "pair_style dpd/gen 1.0 1.0 31",
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "pair_style dpd/gen 1.0 1.0 31",
           "read_data " + data, "timestep 0.01", "run 0 post no"});
   EXPECT_LT(max_rel_diff(l.gather("f"), f_ref), 1e-13);
 }
@@ -256,11 +276,13 @@ TEST(PairDpdGen, WorksInsideHybridOverlay)
 {
   Lammps l;
   setup_box(l);
-  l.cmds({"pair_style dpd/gen 0.0 1.0 1", "pair_coeff * * 25 4.5 0.5", "pair_coeff 1 2 25 4.5 0.5 1.2"});
+  l.cmds({"pair_style dpd/gen 0.0 1.0 1", "pair_coeff * * 25 4.5 0.5",
+          "pair_coeff 1 2 25 4.5 0.5 1.2"});
   const Snapshot alone = snapshot(l);
-  l.cmds({"pair_style hybrid/overlay dpd/gen 0.0 1.0 1 zero 1.2", "pair_coeff * * dpd/gen 25 4.5 0.5",
-          "pair_coeff 1 2 dpd/gen 25 4.5 0.5 1.2", "pair_coeff * * zero", "compute split all dpd/split",
-          "variable fc equal c_split[1]", "thermo_style custom step v_fc"});
+  l.cmds({"pair_style hybrid/overlay dpd/gen 0.0 1.0 1 zero 1.2",
+          "pair_coeff * * dpd/gen 25 4.5 0.5", "pair_coeff 1 2 dpd/gen 25 4.5 0.5 1.2",
+          "pair_coeff * * zero", "compute split all dpd/split", "variable fc equal c_split[1]",
+          "thermo_style custom step v_fc"});
   const Snapshot overlay = snapshot(l);
   EXPECT_LT(max_rel_diff(overlay.f, alone.f), 1e-14);
   EXPECT_LT(max_rel_diff(overlay.virial, alone.virial), 1e-13);
@@ -268,28 +290,47 @@ TEST(PairDpdGen, WorksInsideHybridOverlay)
 
 TEST(PairDpdGen, BadInputGivesClearErrors)
 {
-  etdtest::expect_errors({
-      {{"pair_style dpd/gen 1.0 1.0"}, "expected 3 arguments"},
-      {{"pair_style dpd/gen -1.0 1.0 5"}, "temperature must be >= 0"},
-      {{"pair_style dpd/gen 1.0 0.0 5"}, "cutoff must be > 0"},
-      {{"pair_style dpd/gen 1.0 1.0 -3"}, "seed must be a positive integer"},
-      {{"pair_style dpd/gen 1.0 1.0 abc"}, "'abc'"},    // LAMMPS parses the number: its wording is not ours; the argument is named
-      {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5"}, "expected I J a gamma s"},
-      {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 -4.5 0.5"}, "gamma must be >= 0"},
-      {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0"}, "exponent s must be > 0"},
-      {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 -1"}, "exponent s must be > 0"},
-      {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5 -1.0"}, "cutoff must be > 0"},
-      {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5 cut_d 0"}, "cut_d must be > 0"},
-      {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5 cut_d"}, "cut_d needs a value"},
-      {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5 exp_c 0"}, "exp_c must be > 0"},
-      {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5 1.0 bogus 3"}, "unknown keyword or extra argument 'bogus'"},
-      {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5 1.0 2.0"}, "unknown keyword or extra argument '2.0'"},
-      {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5", "run 0"}, ""},    // LAMMPS's own check: only that it stops
-      {{"comm_modify vel no", "pair_style dpd/gen 1.0 1.0 5", "pair_coeff * * 25 4.5 0.5", "run 0"}, "comm_modify vel yes"},
-      {{"pair_style hybrid dpd/gen 1.0 1.0 5 zero 1.0", "pair_coeff * * dpd/gen 25 4.5"}, "expected I J a gamma s"},
-      {{"pair_style hybrid dpd/gen 1.0 1.0 5 zero 1.0", "pair_coeff * * dpd/gen 25 4.5 0.5", "pair_coeff 1 2 zero",
-        "comm_modify vel no", "run 0"}, "comm_modify vel yes"},
-      {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff * * 25 4.5 0.5", "compute s all dpd/split extra"}, "compute dpd/split"},
-      {{"pair_style zero 1.0", "pair_coeff * *", "compute s all dpd/split", "run 0"}, "Compute dpd/split requires pair style dpd/gen"},
-  }, [](Lammps &l) { setup_box(l); });
+  etdtest::expect_errors(
+      {
+          {{"pair_style dpd/gen 1.0 1.0"}, "expected 3 arguments"},
+          {{"pair_style dpd/gen -1.0 1.0 5"}, "temperature must be >= 0"},
+          {{"pair_style dpd/gen 1.0 0.0 5"}, "cutoff must be > 0"},
+          {{"pair_style dpd/gen 1.0 1.0 -3"}, "seed must be a positive integer"},
+          {{"pair_style dpd/gen 1.0 1.0 abc"},
+           "'abc'"},    // LAMMPS parses the number: its wording is not ours; the argument is named
+          {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5"}, "expected I J a gamma s"},
+          {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 -4.5 0.5"}, "gamma must be >= 0"},
+          {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0"}, "exponent s must be > 0"},
+          {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 -1"}, "exponent s must be > 0"},
+          {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5 -1.0"},
+           "cutoff must be > 0"},
+          {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5 cut_d 0"},
+           "cut_d must be > 0"},
+          {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5 cut_d"},
+           "cut_d needs a value"},
+          {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5 exp_c 0"},
+           "exp_c must be > 0"},
+          {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5 1.0 bogus 3"},
+           "unknown keyword or extra argument 'bogus'"},
+          {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5 1.0 2.0"},
+           "unknown keyword or extra argument '2.0'"},
+          {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 25 4.5 0.5", "run 0"},
+           ""},    // LAMMPS's own check: only that it stops
+          {{"comm_modify vel no", "pair_style dpd/gen 1.0 1.0 5", "pair_coeff * * 25 4.5 0.5",
+            "run 0"},
+           "comm_modify vel yes"},
+          {{"pair_style hybrid dpd/gen 1.0 1.0 5 zero 1.0", "pair_coeff * * dpd/gen 25 4.5"},
+           "expected I J a gamma s"},
+          {{"pair_style hybrid dpd/gen 1.0 1.0 5 zero 1.0", "pair_coeff * * dpd/gen 25 4.5 0.5",
+            "pair_coeff 1 2 zero", "comm_modify vel no", "run 0"},
+           "comm_modify vel yes"},
+          {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff * * 25 4.5 0.5",
+            "compute s all dpd/split extra"},
+           "compute dpd/split"},
+          {{"pair_style zero 1.0", "pair_coeff * *", "compute s all dpd/split", "run 0"},
+           "Compute dpd/split requires pair style dpd/gen"},
+      },
+      [](Lammps &l) {
+        setup_box(l);
+      });
 }

@@ -11,8 +11,14 @@
 
 namespace {
 
-int owned_atoms(int rank) { return 10 + 3 * rank; }
-double value_of(int rank, int index, int k) { return 1000.0 * rank + index + 0.25 * k; }
+int owned_atoms(int rank)
+{
+  return 10 + 3 * rank;
+}
+double value_of(int rank, int index, int k)
+{
+  return 1000.0 * rank + index + 0.25 * k;
+}
 
 // Asks every other rank (but, depending on the round, not all of them) for a random selection of
 // its atoms, some twice over, and checks what arrives.

@@ -71,9 +71,9 @@ TEST(Plugin, LoadingTwiceIsHarmless)
 TEST(Plugin, StyleUsedWithoutItsPairStyleGivesClearError)
 {
   Lammps l;
-  l.cmds({"units lj", "atom_modify map array", "region box block 0 4 0 4 0 4",
-          "create_box 1 box", "create_atoms 1 random 40 1 NULL", "mass 1 1.0",
-          "pair_style zero 1.0", "pair_coeff * *", "fix 1 all etd"});
+  l.cmds({"units lj", "atom_modify map array", "region box block 0 4 0 4 0 4", "create_box 1 box",
+          "create_atoms 1 random 40 1 NULL", "mass 1 1.0", "pair_style zero 1.0", "pair_coeff * *",
+          "fix 1 all etd"});
   const std::string message = l.error_of("run 1");
   EXPECT_NE(message.find("Fix etd requires pair style dpd/gen"), std::string::npos) << message;
 }

@@ -22,10 +22,19 @@ double max_abs_diff(const std::vector<double> &a, const std::vector<double> &b)
 
 std::vector<std::string> fluid(const std::string &newton, const std::string &data = DATA)
 {
-  return {"units lj", "atom_modify map array", "newton " + newton, "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes",
-          "read_data " + data, "mass 1 0.01", "mass 2 1.0", "timestep 0.001",
-          "pair_style dpd/gen 1.0 1.0 2718", "pair_coeff 1 1 18.75 4.5 0.5",
-          "pair_coeff 2 2 25 4.5 2.0", "pair_coeff 1 2 1750 20.48 0.25 1.0 cut_d 1.5 exp_c 0.5"};
+  return {"units lj",
+          "atom_modify map array",
+          "newton " + newton,
+          "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes",
+          "read_data " + data,
+          "mass 1 0.01",
+          "mass 2 1.0",
+          "timestep 0.001",
+          "pair_style dpd/gen 1.0 1.0 2718",
+          "pair_coeff 1 1 18.75 4.5 0.5",
+          "pair_coeff 2 2 25 4.5 2.0",
+          "pair_coeff 1 2 1750 20.48 0.25 1.0 cut_d 1.5 exp_c 0.5"};
 }
 
 // all velocities, then all positions, by atom ID
@@ -54,10 +63,13 @@ void expect_agreement(const std::vector<std::vector<double>> &results, int first
 // the middle of the 7.2 box) changed between two snapshots, counting periodic wrap-arounds.
 double crossings(const std::vector<double> &before, const std::vector<double> &after)
 {
-  auto half = [](double c) { return static_cast<int>(std::floor(c / 3.6)) & 1; };
+  auto half = [](double c) {
+    return static_cast<int>(std::floor(c / 3.6)) & 1;
+  };
   double count = 0.0;
   for (size_t a = 0; a < before.size() / 3; a++)
-    if (half(before[3 * a]) != half(after[3 * a]) || half(before[3 * a + 1]) != half(after[3 * a + 1]))
+    if (half(before[3 * a]) != half(after[3 * a]) ||
+        half(before[3 * a + 1]) != half(after[3 * a + 1]))
       count += 1.0;
   return count;
 }
@@ -176,7 +188,8 @@ TEST_F(Ranks, ImplicitTrajectoryUnderShearAgreesAcrossRankCounts)
       results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
         l.cmds(fluid("on"));
         l.cmds({"change_box all triclinic", "fix 1 all etd scheme implicit tol 1e-10" + variant,
-                "fix 2 all deform 1 xy erate 2.0 xz erate 1.0 yz erate -1.0 remap v", "run 10 post no"});
+                "fix 2 all deform 1 xy erate 2.0 xz erate 1.0 yz erate -1.0 remap v",
+                "run 10 post no"});
         return velocities_and_positions(l);
       }));
   if (etdtest::world_rank() != 0) return;

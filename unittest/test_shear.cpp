@@ -36,33 +36,39 @@ ShearResult shear_run(const std::string &integrator, const std::string &plane, d
   const std::string data = etdtest::work_file("shear_fluid.data");
   etdtest::write_random_data(data, 2048, 8.0, 2024, 1, 0.0);
   Lammps l;
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + data,
-          "change_box all triclinic", "mass 1 0.01",
-          "velocity all create 1.0 97 mom yes dist gaussian", "timestep " + std::to_string(dt)});
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "read_data " + data, "change_box all triclinic",
+          "mass 1 0.01", "velocity all create 1.0 97 mom yes dist gaussian",
+          "timestep " + std::to_string(dt)});
   if (integrator == "stock") {
     l.cmds({"pair_style dpd/ext 1.0 1.0 31", "pair_coeff 1 1 18.75 4.5 0.0 0.25 0.25",
             "fix 1 all nve"});
   } else {
     l.cmds({"pair_style dpd/gen 1.0 1.0 31", "pair_coeff 1 1 18.75 4.5 0.5"});
-    if (integrator == "implicit") l.cmd("fix 1 all etd scheme implicit");
-    else if (integrator == "overdamped") l.cmd("fix 1 all etd scheme implicit overdamped yes");
-    else l.cmd("fix 1 all etd");
+    if (integrator == "implicit")
+      l.cmd("fix 1 all etd scheme implicit");
+    else if (integrator == "overdamped")
+      l.cmd("fix 1 all etd scheme implicit overdamped yes");
+    else
+      l.cmd("fix 1 all etd");
   }
   const char flow = plane[0], gradient = plane[1];
   const int stress_index = plane == "xy" ? 4 : (plane == "xz" ? 5 : 6);
   l.cmds({"fix 2 all deform 1 " + plane + " erate " + std::to_string(RATE) + " remap v",
           "compute tdef all temp/deform", "compute p all pressure tdef", "thermo_modify temp tdef",
-          std::string("compute tprofile all temp/profile ") + (flow == 'x' ? "1 0 0 " : "0 1 0 ") + gradient + " 8",
+          std::string("compute tprofile all temp/profile ") + (flow == 'x' ? "1 0 0 " : "0 1 0 ") +
+              gradient + " 8",
           "variable stress equal c_p[" + std::to_string(stress_index) + "]",
           std::string("variable g atom ") + gradient, std::string("variable u atom v") + flow,
           "variable ug atom v_u*v_g", "variable gg atom v_g*v_g",
           "compute moments all reduce ave v_u v_g v_ug v_gg",
-          "variable slope equal (c_moments[3]-c_moments[1]*c_moments[2])/(c_moments[4]-c_moments[2]^2)",
+          "variable slope equal "
+          "(c_moments[3]-c_moments[1]*c_moments[2])/(c_moments[4]-c_moments[2]^2)",
           "run " + std::to_string(static_cast<int>(std::lround(startup / dt))) + " post no",
           "fix average all ave/time 1 1 1 c_tdef v_stress v_slope c_tprofile ave running",
           "run " + std::to_string(static_cast<int>(std::lround(production / dt))) + " post no"});
-  return {l.fix_vector("average", 0), -l.fix_vector("average", 1) / RATE, l.fix_vector("average", 2),
-          l.fix_vector("average", 3)};
+  return {l.fix_vector("average", 0), -l.fix_vector("average", 1) / RATE,
+          l.fix_vector("average", 2), l.fix_vector("average", 3)};
 }
 
 }    // namespace
@@ -78,13 +84,14 @@ TEST(Shear, ImplicitViscosityAndProfileMatchVelocityVerletInEveryPlane)
 {
   if (etdtest::world_size() > 1) GTEST_SKIP() << "serial test";
   const ShearResult stock = shear_run("stock", "xy", 0.0005);
-  std::printf("stock dpd/ext + nve, dt 0.0005, xy: kBT %.4f eta %.4f slope %.4f\n", stock.temperature,
-              stock.viscosity, stock.slope);
+  std::printf("stock dpd/ext + nve, dt 0.0005, xy: kBT %.4f eta %.4f slope %.4f\n",
+              stock.temperature, stock.viscosity, stock.slope);
   EXPECT_NEAR(stock.slope, RATE, 0.05 * RATE);
   for (const std::string plane : {"xy", "xz", "yz"}) {
     const ShearResult implicit = shear_run("implicit", plane, 0.003);
-    std::printf("implicit, dt 0.003, %s: kBT %.4f (temp/profile %.4f) eta %.4f slope %.4f\n", plane.c_str(),
-                implicit.temperature, implicit.profile_temperature, implicit.viscosity, implicit.slope);
+    std::printf("implicit, dt 0.003, %s: kBT %.4f (temp/profile %.4f) eta %.4f slope %.4f\n",
+                plane.c_str(), implicit.temperature, implicit.profile_temperature,
+                implicit.viscosity, implicit.slope);
     EXPECT_NEAR(implicit.viscosity, stock.viscosity, 0.25 * stock.viscosity) << plane;
     EXPECT_NEAR(implicit.slope, RATE, 0.10 * RATE) << plane;
     EXPECT_NEAR(implicit.temperature, stock.temperature, 0.02) << plane;
@@ -104,7 +111,8 @@ TEST(Shear, DiagonalAndOverdampedSchemesShearTheFluid)
   const ShearResult diagonal = shear_run("diagonal", "xy", 0.0005);
   const ShearResult overdamped = shear_run("overdamped", "xy", 0.001, 0.3, 0.6);
   std::printf("implicit eta %.4f slope %.4f; diagonal eta %.4f slope %.4f; overdamped eta %.4f "
-              "slope %.4f\n", implicit.viscosity, implicit.slope, diagonal.viscosity, diagonal.slope,
+              "slope %.4f\n",
+              implicit.viscosity, implicit.slope, diagonal.viscosity, diagonal.slope,
               overdamped.viscosity, overdamped.slope);
   EXPECT_NEAR(diagonal.viscosity, implicit.viscosity, 0.25 * implicit.viscosity);
   EXPECT_NEAR(diagonal.slope, RATE, 0.10 * RATE);
@@ -125,21 +133,32 @@ TEST(Shear, FpmParticlesSpinWithTheVorticity)
   for (const std::string scheme : {"implicit", "diagonal"}) {
     const bool implicit = scheme == "implicit";
     Lammps l;
-    l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
-            "neigh_modify every 1 delay 0 check yes", "read_data " + data, "change_box all triclinic",
-            "set group all mass 0.01", "velocity all create 1.0 5 mom yes dist gaussian",
-            "pair_style dpd/fpm 1.0 1.0 8642", "pair_coeff 1 1 25 4.5 4.5 0.5",
+    l.cmds({"units lj",
+            "atom_style sphere",
+            "atom_modify map array",
+            "comm_modify vel yes",
+            "neigh_modify every 1 delay 0 check yes",
+            "read_data " + data,
+            "change_box all triclinic",
+            "set group all mass 0.01",
+            "velocity all create 1.0 5 mom yes dist gaussian",
+            "pair_style dpd/fpm 1.0 1.0 8642",
+            "pair_coeff 1 1 25 4.5 4.5 0.5",
             implicit ? "timestep 0.003" : "timestep 0.0005",
             implicit ? "fix 1 all etd scheme implicit" : "fix 1 all etd",
-            "fix 2 all deform 1 xy erate 1.0 remap v", "variable uy atom vx*y", "variable yy atom y*y",
-            "compute spin all property/atom omegaz", "compute moments all reduce ave vx y v_uy v_yy c_spin",
-            "variable slope equal (c_moments[3]-c_moments[1]*c_moments[2])/(c_moments[4]-c_moments[2]^2)",
+            "fix 2 all deform 1 xy erate 1.0 remap v",
+            "variable uy atom vx*y",
+            "variable yy atom y*y",
+            "compute spin all property/atom omegaz",
+            "compute moments all reduce ave vx y v_uy v_yy c_spin",
+            "variable slope equal "
+            "(c_moments[3]-c_moments[1]*c_moments[2])/(c_moments[4]-c_moments[2]^2)",
             implicit ? "run 200 post no" : "run 600 post no",
             "fix average all ave/time 1 1 1 v_slope c_moments[5] ave running",
             implicit ? "run 300 post no" : "run 1200 post no"});
     const double slope = l.fix_vector("average", 0), spin = l.fix_vector("average", 1);
-    std::printf("dpd/fpm + %s under xy shear at rate 1: slope %.4f, mean Omega_z %.4f\n", scheme.c_str(),
-                slope, spin);
+    std::printf("dpd/fpm + %s under xy shear at rate 1: slope %.4f, mean Omega_z %.4f\n",
+                scheme.c_str(), slope, spin);
     EXPECT_NEAR(slope, 1.0, 0.05) << scheme;
     // one rotational degree of freedom's thermal spread is sqrt(kBT/I) = 20: the mean over 1,536
     // particles and 300 steps is known to about 0.02
@@ -157,7 +176,8 @@ TEST(Shear, ScaledAndTiltedBoxesKeepTemperatureAndMomentum)
   for (const std::string box : {"fix 2 all deform 1 x scale 1.1 remap x",
                                 "change_box all xy final 2.0 xz final -1.0 remap"}) {
     Lammps l;
-    l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + data,
+    l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+            "neigh_modify every 1 delay 0 check yes", "read_data " + data,
             "change_box all triclinic", "mass 1 0.01",
             "velocity all create 1.0 11 mom yes dist gaussian", "pair_style dpd/gen 1.0 1.0 3",
             "pair_coeff 1 1 18.75 4.5 0.5", "timestep 0.003", "fix 1 all etd scheme implicit", box,
@@ -167,8 +187,8 @@ TEST(Shear, ScaledAndTiltedBoxesKeepTemperatureAndMomentum)
     double p[3] = {0.0, 0.0, 0.0};
     for (size_t a = 0; a < v.size() / 3; a++)
       for (int k = 0; k < 3; k++) p[k] += 0.01 * v[3 * a + k];
-    std::printf("%s: kBT %.4f, momentum %.2e %.2e %.2e\n", box.c_str(), l.fix_scalar("average"), p[0],
-                p[1], p[2]);
+    std::printf("%s: kBT %.4f, momentum %.2e %.2e %.2e\n", box.c_str(), l.fix_scalar("average"),
+                p[0], p[1], p[2]);
     EXPECT_NEAR(l.fix_scalar("average"), 1.0, 0.02) << box;
     for (double pk : p) EXPECT_LT(std::fabs(pk), 1e-12) << box;
   }

@@ -33,11 +33,12 @@ void empty_box(Lammps &l)
 void pipe_fluid(Lammps &l, double radius, const std::string &integrator)
 {
   const std::string R = std::to_string(radius);
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "boundary p p p",
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "boundary p p p",
           "region box block 0 6 -4 4 -4 4", "create_box 1 box",
           "region pipe cylinder x 0 0 " + R + " INF INF",
-          "create_atoms 1 random " + std::to_string(static_cast<int>(4 * 6 * M_PI * radius * radius)) +
-              " 8123 pipe",
+          "create_atoms 1 random " +
+              std::to_string(static_cast<int>(4 * 6 * M_PI * radius * radius)) + " 8123 pipe",
           "mass 1 0.01", "velocity all create 1.0 4411 mom yes", "pair_style dpd/gen 1.0 1.0 2024",
           "pair_coeff 1 1 18.75 4.5 0.5", "timestep 0.001", integrator});
 }
@@ -49,9 +50,10 @@ TEST(WallCylinderBounce, HandBuiltCrossingIsReversedAndPutBack)
   Lammps l;
   empty_box(l);
   // axis z through (5, 5), R = 1: atom 1 crosses during the step, atom 2 stays inside
-  l.cmds({"create_atoms 1 single 5.99 5.0 3.0 units box", "create_atoms 1 single 5.0 5.5 3.0 units box",
-          "set atom 1 vx 3.0 vy 0.0 vz 1.0", "set atom 2 vx 1.0 vy 2.0 vz 0.0",
-          "fix 1 all nve", "fix wall all wall/cylinder/bounce z 5.0 5.0 1.0", "run 1 post no"});
+  l.cmds({"create_atoms 1 single 5.99 5.0 3.0 units box",
+          "create_atoms 1 single 5.0 5.5 3.0 units box", "set atom 1 vx 3.0 vy 0.0 vz 1.0",
+          "set atom 2 vx 1.0 vy 2.0 vz 0.0", "fix 1 all nve",
+          "fix wall all wall/cylinder/bounce z 5.0 5.0 1.0", "run 1 post no"});
   const auto x = l.gather("x"), v = l.gather("v");
   // atom 1: wall reached at a third of the step, the other two thirds travelled back
   EXPECT_NEAR(x[0], 5.98, 1e-12);
@@ -74,8 +76,8 @@ TEST(WallCylinderBounce, NoAtomLeavesADrivenPipe)
   Lammps l;
   pipe_fluid(l, 3.0, "fix integrate all etd");
   l.cmds({"fix drive all addforce 2.0 0.0 0.0", "fix wall all wall/cylinder/bounce x 0.0 0.0 3.0",
-          "variable r atom sqrt(y*y+z*z)", "compute rmax all reduce max v_r", "thermo_style custom step c_rmax",
-          "thermo 50"});
+          "variable r atom sqrt(y*y+z*z)", "compute rmax all reduce max v_r",
+          "thermo_style custom step c_rmax", "thermo 50"});
   double worst = 0.0;
   for (int block = 0; block < 30; block++) {    // 1500 steps, checked every 50
     l.cmd("run 50 post no");
@@ -91,7 +93,8 @@ TEST(WallCylinderBounce, NoAtomLeavesADrivenPipe)
 TEST(WallCylinderBounce, NoAtomEntersAnObstacle)
 {
   Lammps l;
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "region box block 0 6 0 6 0 4",
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "region box block 0 6 0 6 0 4",
           "create_box 1 box", "region rod cylinder z 3 3 1.0 INF INF side out",
           "create_atoms 1 random 540 771 rod", "mass 1 0.01", "velocity all create 1.0 99 mom yes",
           "pair_style dpd/gen 1.0 1.0 5", "pair_coeff 1 1 18.75 4.5 0.5", "timestep 0.001",
@@ -116,19 +119,40 @@ std::pair<double, long> couette_cell(bool with_reflect, int steps, double *redra
                                      const std::string &scheme = "diagonal")
 {
   Lammps l;
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "boundary p p f",
-          "region box block 0 4 0 4 -6 6 units box", "create_box 3 box", "lattice fcc 4.0 origin 0 0 0.25",
-          "region fluid block INF INF INF INF -3 3 units box", "region lo block INF INF INF INF -4.5 -3 units box",
-          "region hi block INF INF INF INF 3 4.5 units box", "create_atoms 1 region fluid",
-          "create_atoms 2 region lo", "create_atoms 3 region hi", "group fluid type 1", "group walls type 2 3",
-          "group lo type 2", "group hi type 3", "mass * 0.01", "pair_style dpd/gen 1.0 1.0 4711",
-          "pair_coeff * * 18.75 4.5 0.5", "pair_coeff 2*3 2*3 0.0 0.0 0.5",
+  l.cmds({"units lj",
+          "atom_modify map array",
+          "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes",
+          "boundary p p f",
+          "region box block 0 4 0 4 -6 6 units box",
+          "create_box 3 box",
+          "lattice fcc 4.0 origin 0 0 0.25",
+          "region fluid block INF INF INF INF -3 3 units box",
+          "region lo block INF INF INF INF -4.5 -3 units box",
+          "region hi block INF INF INF INF 3 4.5 units box",
+          "create_atoms 1 region fluid",
+          "create_atoms 2 region lo",
+          "create_atoms 3 region hi",
+          "group fluid type 1",
+          "group walls type 2 3",
+          "group lo type 2",
+          "group hi type 3",
+          "mass * 0.01",
+          "pair_style dpd/gen 1.0 1.0 4711",
+          "pair_coeff * * 18.75 4.5 0.5",
+          "pair_coeff 2*3 2*3 0.0 0.0 0.5",
           "neigh_modify exclude type 2 2 exclude type 3 3 exclude type 2 3",
-          "velocity fluid create 1.0 8231 mom yes", "velocity lo set -3 0 0", "velocity hi set 3 0 0",
-          "timestep 0.001", "fix integrate fluid etd scheme " + scheme, "fix move_lo lo move linear -3 0 0",
+          "velocity fluid create 1.0 8231 mom yes",
+          "velocity lo set -3 0 0",
+          "velocity hi set 3 0 0",
+          "timestep 0.001",
+          "fix integrate fluid etd scheme " + scheme,
+          "fix move_lo lo move linear -3 0 0",
           "fix move_hi hi move linear 3 0 0",
           "fix layer fluid wall/thermal/layer 99 zlo -3 0.2 1.0 -3 0 0 zhi 3 0.2 1.0 3 0 0",
-          "thermo_modify lost ignore", "variable absz atom abs(z)", "compute zmax fluid reduce max v_absz",
+          "thermo_modify lost ignore",
+          "variable absz atom abs(z)",
+          "compute zmax fluid reduce max v_absz",
           "fix zmax_series all vector 1 c_zmax"});
   if (with_reflect) l.cmd("fix reflect fluid wall/reflect zlo -3 zhi 3 units box");
   l.cmd("run " + std::to_string(steps) + " post no");
@@ -159,10 +183,12 @@ TEST(WallThermalLayer, NoFluidAtomCrossesPlaneWallsInALongCouetteRun)
 TEST(WallThermalLayer, LayerGetsTheWallMaxwellianAndTheRestIsUntouched)
 {
   Lammps l;
-  l.cmds({"units lj", "atom_modify map array", "region box block 0 10 0 10 0 10", "create_box 1 box",
-          "create_atoms 1 random 40000 17 NULL", "mass 1 0.25", "velocity all set 1.0 -2.0 0.5",
-          "pair_style zero 1.0", "pair_coeff * *", "timestep 0.001",
-          "fix layer all wall/thermal/layer 4321 zlo 1.0 2.0 0.5 3.0 -1.0 0.0 zhi 9.0 1.0 2.0 0.0 0.0 0.0",
+  l.cmds({"units lj", "atom_modify map array", "region box block 0 10 0 10 0 10",
+          "create_box 1 box", "create_atoms 1 random 40000 17 NULL", "mass 1 0.25",
+          "velocity all set 1.0 -2.0 0.5", "pair_style zero 1.0", "pair_coeff * *",
+          "timestep 0.001",
+          "fix layer all wall/thermal/layer 4321 zlo 1.0 2.0 0.5 3.0 -1.0 0.0 zhi 9.0 1.0 2.0 0.0 "
+          "0.0 0.0",
           "run 1 post no"});
   const auto x = l.gather("x"), v = l.gather("v");
   double sum[2][3] = {{0}}, sum2[2][3] = {{0}};
@@ -192,8 +218,10 @@ TEST(WallThermalLayer, LayerGetsTheWallMaxwellianAndTheRestIsUntouched)
       const double mean = sum[f][k] / n[f];
       const double var = sum2[f][k] / n[f] - mean * mean;
       // 5 standard errors
-      EXPECT_NEAR(mean, wall_v[f][k], 5.0 * std::sqrt(kT_over_m[f] / n[f])) << "face " << f << " k " << k;
-      EXPECT_NEAR(var / kT_over_m[f], 1.0, 5.0 * std::sqrt(2.0 / n[f])) << "face " << f << " k " << k;
+      EXPECT_NEAR(mean, wall_v[f][k], 5.0 * std::sqrt(kT_over_m[f] / n[f]))
+          << "face " << f << " k " << k;
+      EXPECT_NEAR(var / kT_over_m[f], 1.0, 5.0 * std::sqrt(2.0 / n[f]))
+          << "face " << f << " k " << k;
     }
 }
 
@@ -202,7 +230,8 @@ TEST(WallThermalLayer, DrawsDependOnSeedAndStep)
   auto layer_velocities = [](const std::string &seed, int steps) {
     Lammps l;
     l.cmds({"units lj", "atom_modify map array", "region box block 0 4 0 4 0 4", "create_box 1 box",
-            "create_atoms 1 random 200 5 NULL", "mass 1 1.0", "pair_style zero 1.0", "pair_coeff * *",
+            "create_atoms 1 random 200 5 NULL", "mass 1 1.0", "pair_style zero 1.0",
+            "pair_coeff * *",
             "fix layer all wall/thermal/layer " + seed + " zlo 0.0 4.0 1.0 0.0 0.0 0.0",
             "run " + std::to_string(steps) + " post no"});
     return l.gather("v");
@@ -216,25 +245,33 @@ TEST(WallThermalLayer, DrawsDependOnSeedAndStep)
 
 TEST(Walls, BadInputIsAnError)
 {
-  etdtest::expect_errors({
-      {{"fix w all wall/cylinder/bounce z 5 5"}, "expected dim c1 c2 radius"},
-      {{"fix w all wall/cylinder/bounce q 5 5 1"}, "dim must be x, y or z, got q"},
-      {{"fix w all wall/cylinder/bounce z 5 5 0"}, "radius must be > 0"},
-      {{"fix w all wall/cylinder/bounce z 5 5 -1"}, "radius must be > 0"},
-      {{"fix w all wall/cylinder/bounce z 5 5 1 side across"}, "side must be in or out, got across"},
-      {{"fix w all wall/cylinder/bounce z 5 5 1 side"}, "side needs in or out"},
-      {{"fix w all wall/cylinder/bounce z 5 5 1 speed 2"}, "unknown keyword speed"},
-      {{"fix w all wall/cylinder/bounce z 5 5 6", "run 0"}, "does not fit in the periodic box"},
-      {{"fix w all wall/cylinder/bounce z 5 5 1", "run_style respa 2 2", "run 0"}, "respa"},
-      {{"fix w all wall/thermal/layer 5 zlo 0 1 1 0 0"}, "expected seed and at least one face"},
-      {{"fix w all wall/thermal/layer 0 zlo 0 1 1 0 0 0"}, "seed must be > 0"},
-      {{"fix w all wall/thermal/layer 5 zmid 0 1 1 0 0 0"}, "unknown face zmid"},
-      {{"fix w all wall/thermal/layer 5 zlo 0 0 1 0 0 0"}, "thickness of face zlo must be > 0"},
-      {{"fix w all wall/thermal/layer 5 zhi 0 1 -1 0 0 0"}, "kT of face zhi must be >= 0"},
-      {{"fix w all wall/thermal/layer 5 zlo 0 1 1 0 0 2"}, "velocity of face zlo must lie in the wall plane"},
-      {{"fix w all wall/thermal/layer 5 xlo 0 1 1 0 1 0 xlo 2 1 1 0 0 0"}, "face xlo given twice"},
-      {{"fix w all wall/thermal/layer 5 xlo 0 1 1 0 1 0 yhi 2 1 1"}, "face yhi needs position thickness"},
-  }, [](Lammps &l) { empty_box(l); });
+  etdtest::expect_errors(
+      {
+          {{"fix w all wall/cylinder/bounce z 5 5"}, "expected dim c1 c2 radius"},
+          {{"fix w all wall/cylinder/bounce q 5 5 1"}, "dim must be x, y or z, got q"},
+          {{"fix w all wall/cylinder/bounce z 5 5 0"}, "radius must be > 0"},
+          {{"fix w all wall/cylinder/bounce z 5 5 -1"}, "radius must be > 0"},
+          {{"fix w all wall/cylinder/bounce z 5 5 1 side across"},
+           "side must be in or out, got across"},
+          {{"fix w all wall/cylinder/bounce z 5 5 1 side"}, "side needs in or out"},
+          {{"fix w all wall/cylinder/bounce z 5 5 1 speed 2"}, "unknown keyword speed"},
+          {{"fix w all wall/cylinder/bounce z 5 5 6", "run 0"}, "does not fit in the periodic box"},
+          {{"fix w all wall/cylinder/bounce z 5 5 1", "run_style respa 2 2", "run 0"}, "respa"},
+          {{"fix w all wall/thermal/layer 5 zlo 0 1 1 0 0"}, "expected seed and at least one face"},
+          {{"fix w all wall/thermal/layer 0 zlo 0 1 1 0 0 0"}, "seed must be > 0"},
+          {{"fix w all wall/thermal/layer 5 zmid 0 1 1 0 0 0"}, "unknown face zmid"},
+          {{"fix w all wall/thermal/layer 5 zlo 0 0 1 0 0 0"}, "thickness of face zlo must be > 0"},
+          {{"fix w all wall/thermal/layer 5 zhi 0 1 -1 0 0 0"}, "kT of face zhi must be >= 0"},
+          {{"fix w all wall/thermal/layer 5 zlo 0 1 1 0 0 2"},
+           "velocity of face zlo must lie in the wall plane"},
+          {{"fix w all wall/thermal/layer 5 xlo 0 1 1 0 1 0 xlo 2 1 1 0 0 0"},
+           "face xlo given twice"},
+          {{"fix w all wall/thermal/layer 5 xlo 0 1 1 0 1 0 yhi 2 1 1"},
+           "face yhi needs position thickness"},
+      },
+      [](Lammps &l) {
+        empty_box(l);
+      });
 }
 
 TEST(Walls, ThermalLayerNeedsAtomIds)
@@ -253,10 +290,12 @@ TEST(Walls, TrajectoriesAgreeAcrossRankCounts)
   std::vector<std::vector<double>> results;
   for (int ranks : {1, 2, 4})
     results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
-      l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes", "neigh_modify every 1 delay 0 check yes", "read_data " + DATA,
-              "mass 1 0.01", "timestep 0.001", "pair_style dpd/gen 1.0 1.0 2718",
-              "pair_coeff 1 1 18.75 4.5 0.5", "fix 1 all etd",
-              "fix layer all wall/thermal/layer 77 zlo 1.0 0.8 1.0 2.0 0.0 0.0 zhi 6.2 0.8 1.0 -2.0 0.0 0.0",
+      l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+              "neigh_modify every 1 delay 0 check yes", "read_data " + DATA, "mass 1 0.01",
+              "timestep 0.001", "pair_style dpd/gen 1.0 1.0 2718", "pair_coeff 1 1 18.75 4.5 0.5",
+              "fix 1 all etd",
+              "fix layer all wall/thermal/layer 77 zlo 1.0 0.8 1.0 2.0 0.0 0.0 zhi 6.2 0.8 1.0 "
+              "-2.0 0.0 0.0",
               "fix rod all wall/cylinder/bounce x 3.6 3.6 1.0 side out", "run 20 post no"});
       auto x = l.gather("x");
       auto v = l.gather("v");

@@ -31,15 +31,22 @@ inline PowerKind classify_power(double exponent)
 inline double power_of(double q, PowerKind kind, double exponent)
 {
   switch (kind) {
-    case PowerKind::Zero: return 1.0;
-    case PowerKind::Quarter: return std::sqrt(std::sqrt(q));
-    case PowerKind::Half: return std::sqrt(q);
-    case PowerKind::One: return q;
-    case PowerKind::ThreeHalves: return q * std::sqrt(q);
-    case PowerKind::Two: return q * q;
+    case PowerKind::Zero:
+      return 1.0;
+    case PowerKind::Quarter:
+      return std::sqrt(std::sqrt(q));
+    case PowerKind::Half:
+      return std::sqrt(q);
+    case PowerKind::One:
+      return q;
+    case PowerKind::ThreeHalves:
+      return q * std::sqrt(q);
+    case PowerKind::Two:
+      return q * q;
     // exp(e log q) is pow to a few ulp for 0 <= q <= 1 (q = 0 gives exp(-inf) = 0) and about
     // 25 % cheaper than glibc's pow, which matters for s = 0.4244 in the pair loop
-    default: return std::exp(exponent * std::log(q));
+    default:
+      return std::exp(exponent * std::log(q));
   }
 }
 
@@ -50,9 +57,18 @@ inline double cutoff_weight(double r, double rc, double exponent)
   return std::pow(1.0 - r / rc, exponent);
 }
 
-inline double conservative_weight(double r, double rc_c, double p) { return cutoff_weight(r, rc_c, p); }
-inline double dissipative_weight(double r, double rc_d, double s) { return cutoff_weight(r, rc_d, s); }
-inline double random_weight(double r, double rc_d, double s) { return cutoff_weight(r, rc_d, 0.5 * s); }
+inline double conservative_weight(double r, double rc_c, double p)
+{
+  return cutoff_weight(r, rc_c, p);
+}
+inline double dissipative_weight(double r, double rc_d, double s)
+{
+  return cutoff_weight(r, rc_d, s);
+}
+inline double random_weight(double r, double rc_d, double s)
+{
+  return cutoff_weight(r, rc_d, 0.5 * s);
+}
 
 // Energy whose negative derivative is a (1 - r/rc)^p: a rc/(p+1) (1 - r/rc)^(p+1), zero at rc.
 inline double conservative_energy(double r, double a, double rc_c, double p)
@@ -62,17 +78,20 @@ inline double conservative_energy(double r, double a, double rc_c, double p)
 }
 
 // Noise amplitude from the fluctuation-dissipation theorem.
-inline double noise_amplitude(double gamma, double kT) { return std::sqrt(2.0 * gamma * kT); }
+inline double noise_amplitude(double gamma, double kT)
+{
+  return std::sqrt(2.0 * gamma * kT);
+}
 
 // Per type pair constants, precomputed by the pair style.
 struct PairCoefficients {
-  double a = 0.0;           // conservative amplitude
-  double gamma = 0.0;       // friction
-  double sigma = 0.0;       // noise amplitude sqrt(2 gamma kT)
-  double s = 2.0;           // dissipative exponent
-  double p = 1.0;           // conservative exponent
-  double rc_c = 1.0;        // conservative cutoff
-  double rc_d = 1.0;        // dissipative / random cutoff
+  double a = 0.0;        // conservative amplitude
+  double gamma = 0.0;    // friction
+  double sigma = 0.0;    // noise amplitude sqrt(2 gamma kT)
+  double s = 2.0;        // dissipative exponent
+  double p = 1.0;        // conservative exponent
+  double rc_c = 1.0;     // conservative cutoff
+  double rc_d = 1.0;     // dissipative / random cutoff
   double inv_rc_c = 1.0;
   double inv_rc_d = 1.0;
   double rcsq_c = 1.0;
@@ -84,10 +103,17 @@ struct PairCoefficients {
 
   void set(double a_, double gamma_, double s_, double p_, double rc_c_, double rc_d_, double kT)
   {
-    a = a_; gamma = gamma_; s = s_; p = p_; rc_c = rc_c_; rc_d = rc_d_;
+    a = a_;
+    gamma = gamma_;
+    s = s_;
+    p = p_;
+    rc_c = rc_c_;
+    rc_d = rc_d_;
     sigma = noise_amplitude(gamma, kT);
-    inv_rc_c = 1.0 / rc_c; inv_rc_d = 1.0 / rc_d;
-    rcsq_c = rc_c * rc_c; rcsq_d = rc_d * rc_d;
+    inv_rc_c = 1.0 / rc_c;
+    inv_rc_d = 1.0 / rc_d;
+    rcsq_c = rc_c * rc_c;
+    rcsq_d = rc_d * rc_d;
     conservative_kind = classify_power(p);
     dissipative_kind = classify_power(s);
     random_kind = classify_power(0.5 * s);
@@ -97,7 +123,10 @@ struct PairCoefficients {
 
 // sqrt(special) for the random force's special-bond factor; exact 1 for the common unbonded pair
 // without a square root (std::sqrt(1.0) is 1.0, so the result is the same either way).
-inline double special_root(double special) { return special == 1.0 ? 1.0 : std::sqrt(special); }
+inline double special_root(double special)
+{
+  return special == 1.0 ? 1.0 : std::sqrt(special);
+}
 
 // w_R = q^(s/2) and w_D = w_R^2 at q = 1 - r/rc_D (0 <= q <= 1), with the kinds of
 // PairCoefficients or FpmCoefficients. For s = 2, w_R = q and w_D = q q (the same value).
@@ -139,7 +168,7 @@ struct PairForce {
   double conservative = 0.0;
   double dissipative = 0.0;
   double random = 0.0;
-  double friction = 0.0;   // gamma w_D: the pair's contribution to the friction operator
+  double friction = 0.0;    // gamma w_D: the pair's contribution to the friction operator
   double total() const { return conservative + dissipative + random; }
 };
 

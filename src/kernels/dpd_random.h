@@ -15,7 +15,12 @@ namespace etd {
 
 // Streams keep the users of one seed apart (pair noise, FPM matrix noise, integrator noise,
 // wall-layer velocities).
-enum class NoiseStream : std::uint64_t { PairScalar = 1, PairMatrix = 2, Integrator = 3, WallLayer = 4 };
+enum class NoiseStream : std::uint64_t {
+  PairScalar = 1,
+  PairMatrix = 2,
+  Integrator = 3,
+  WallLayer = 4
+};
 
 class PairNoise {
  public:
@@ -53,8 +58,9 @@ class PairNoise {
    public:
     using result_type = std::uint64_t;
     BlockEngine(const PairNoise &noise, std::int64_t tag_i, std::int64_t tag_j,
-                std::int64_t timestep, std::uint64_t first_block = 0)
-        : noise_(noise), tag_i_(tag_i), tag_j_(tag_j), timestep_(timestep), block_(first_block)
+                std::int64_t timestep, std::uint64_t first_block = 0) :
+        noise_(noise),
+        tag_i_(tag_i), tag_j_(tag_j), timestep_(timestep), block_(first_block)
     {
     }
     static constexpr result_type min() { return 0; }

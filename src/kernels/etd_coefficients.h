@@ -38,23 +38,26 @@ inline double phi2(double z)
 
 // Standard deviation factor of an Ornstein-Uhlenbeck velocity over one step relative to a
 // force held constant over the step: sqrt((1 - e^(2z)) / (-2z)) = sqrt(phi1(2z)).
-inline double ou_noise_factor(double z) { return std::sqrt(phi1(2.0 * z)); }
+inline double ou_noise_factor(double z)
+{
+  return std::sqrt(phi1(2.0 * z));
+}
 
 // Coefficients for one component: v' = decay v + current A_n + previous A_(n-1), and the
 // weights of a random force held over the step (piecewise) or integrated exactly (OU).
 struct EtdCoefficients {
-  double decay;            // e^z
-  double current;          // weight of A_n (includes dt)
-  double previous;         // weight of A_(n-1) (includes dt); zero for first order
-  double noise_piecewise;  // dt phi1(z)
-  double noise_exact;      // dt sqrt(phi1(2z)): same variance as the exact OU update (if asked)
+  double decay;              // e^z
+  double current;            // weight of A_n (includes dt)
+  double previous;           // weight of A_(n-1) (includes dt); zero for first order
+  double noise_piecewise;    // dt phi1(z)
+  double noise_exact;        // dt sqrt(phi1(2z)): same variance as the exact OU update (if asked)
 };
 
 // One expm1 per component serves every coefficient (the integrator calls this 3 times per
 // atom and step): e^z = 1 + expm1(z) and expm1(2z) = expm1(z) (expm1(z) + 2), neither of which
 // cancels; only far in the tail, where 1 + expm1(z) would lose relative digits, is exp called.
 inline EtdCoefficients etd_coefficients(double friction_rate, double dt, int order,
-                                       bool want_exact_noise = true)
+                                        bool want_exact_noise = true)
 {
   const double z = -friction_rate * dt;
   const double em1 = std::expm1(z);
@@ -63,7 +66,8 @@ inline EtdCoefficients etd_coefficients(double friction_rate, double dt, int ord
   c.decay = (z > -10.0) ? 1.0 + em1 : std::exp(z);
   c.noise_piecewise = dt * p1;
   // (a square root and a division the piecewise-noise update does without)
-  c.noise_exact = (z == 0.0 || !want_exact_noise) ? dt : dt * std::sqrt(em1 * (em1 + 2.0) / (2.0 * z));
+  c.noise_exact = (z == 0.0 || !want_exact_noise) ? dt
+                                                  : dt * std::sqrt(em1 * (em1 + 2.0) / (2.0 * z));
   if (order == 2) {
     const double p2 = (std::fabs(z) < 1.0) ? phi2(z) : (em1 - z) / (z * z);
     c.current = dt * (p1 + p2);

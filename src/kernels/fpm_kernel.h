@@ -43,7 +43,11 @@ struct FpmCoefficients {
 
   void set(double a_, double gamma_c_, double gamma_s_, double s_, double rc_, double kT)
   {
-    a = a_; gamma_c = gamma_c_; gamma_s = gamma_s_; s = s_; rc = rc_;
+    a = a_;
+    gamma_c = gamma_c_;
+    gamma_s = gamma_s_;
+    s = s_;
+    rc = rc_;
     sigma_c = noise_amplitude(gamma_c, kT);
     sigma_s = noise_amplitude(gamma_s, kT);
     inv_rc = 1.0 / rc;
@@ -55,7 +59,7 @@ struct FpmCoefficients {
 
 // The four unit Gaussians of one pair (theta_ij = theta_ji).
 struct FpmNoise {
-  double central = 0.0;             // theta_C = tr(dW) / sqrt(3 dt)
+  double central = 0.0;                 // theta_C = tr(dW) / sqrt(3 dt)
   double shear[3] = {0.0, 0.0, 0.0};    // theta_A: sqrt(2) dW^A as an axial vector / sqrt(dt)
 };
 

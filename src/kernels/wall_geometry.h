@@ -19,8 +19,8 @@ namespace etd {
 // either (the particle was put there), the particle is put on the surface's fluid side at
 // relative distance `margin` along the radius instead.
 struct CylinderBounce {
-  bool crossed = false;      // the particle was on the wall side and has been moved back
-  bool projected = false;    // ... by the radial fall-back rather than along its path
+  bool crossed = false;             // the particle was on the wall side and has been moved back
+  bool projected = false;           // ... by the radial fall-back rather than along its path
   double x[3] = {0.0, 0.0, 0.0};    // new position relative to the axis
   double v[3] = {0.0, 0.0, 0.0};    // new velocity
 };
@@ -30,12 +30,14 @@ inline bool on_fluid_side(double r2, double radius, bool fluid_inside)
   return fluid_inside ? r2 <= radius * radius : r2 >= radius * radius;
 }
 
-inline CylinderBounce cylinder_bounce(const double rel[3], const double v[3], double dt,
-                                      int axis, double radius, bool fluid_inside,
-                                      double margin = 1e-9)
+inline CylinderBounce cylinder_bounce(const double rel[3], const double v[3], double dt, int axis,
+                                      double radius, bool fluid_inside, double margin = 1e-9)
 {
   CylinderBounce out;
-  for (int k = 0; k < 3; k++) { out.x[k] = rel[k]; out.v[k] = v[k]; }
+  for (int k = 0; k < 3; k++) {
+    out.x[k] = rel[k];
+    out.v[k] = v[k];
+  }
   const int b = (axis + 1) % 3, c = (axis + 2) % 3;
   const double r2 = rel[b] * rel[b] + rel[c] * rel[c];
   if (on_fluid_side(r2, radius, fluid_inside)) return out;
@@ -55,8 +57,10 @@ inline CylinderBounce cylinder_bounce(const double rel[3], const double v[3], do
     // leaving the inside: the larger root; entering the cylinder from outside: the smaller one
     // (written without cancellation)
     double t;
-    if (fluid_inside) t = (qb <= 0.0) ? (-qb + root) / (2.0 * qa) : (-2.0 * qc) / (qb + root);
-    else t = (qb >= 0.0) ? (-qb - root) / (2.0 * qa) : (2.0 * qc) / (-qb + root);
+    if (fluid_inside)
+      t = (qb <= 0.0) ? (-qb + root) / (2.0 * qa) : (-2.0 * qc) / (qb + root);
+    else
+      t = (qb >= 0.0) ? (-qb - root) / (2.0 * qa) : (2.0 * qc) / (-qb + root);
     if (t < 0.0) t = 0.0;
     if (t > 1.0) t = 1.0;
     for (int k = 0; k < 3; k++) out.x[k] = rel[k] - 2.0 * (1.0 - t) * dt * v[k];

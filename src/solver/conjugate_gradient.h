@@ -41,13 +41,11 @@ struct SolverResult {
 // preconditioned residual, so that every search direction stays in the space where A is
 // positive definite (b and A's output must already lie in it).
 template <typename Apply, typename GlobalSum, typename Project = NoProjection>
-inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
-                                       const double *inv_diag, const double *b, double *x,
-                                       double tolerance, int max_iterations,
-                                       const double *block_inverse = nullptr,
-                                       Project project = Project(),
-                                       CgWorkspace *workspace = nullptr,
-                                       const double *start_product = nullptr)
+inline SolverResult
+conjugate_gradient(int n, Apply apply, GlobalSum global_sum, const double *inv_diag,
+                   const double *b, double *x, double tolerance, int max_iterations,
+                   const double *block_inverse = nullptr, Project project = Project(),
+                   CgWorkspace *workspace = nullptr, const double *start_product = nullptr)
 {
   CgWorkspace local;
   CgWorkspace &work = workspace ? *workspace : local;
@@ -68,7 +66,9 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
         const double *m = block_inverse + 9 * a;
         const double *ra = r + 3 * a;
         for (int k = 0; k < 3; k++)
-          z[3 * a + k] = (inv_diag[3 * a + k] != 0.0) ? m[3 * k] * ra[0] + m[3 * k + 1] * ra[1] + m[3 * k + 2] * ra[2] : 0.0;
+          z[3 * a + k] = (inv_diag[3 * a + k] != 0.0)
+              ? m[3 * k] * ra[0] + m[3 * k + 1] * ra[1] + m[3 * k + 2] * ra[2]
+              : 0.0;
       }
     }
     project(z);
@@ -121,7 +121,8 @@ inline SolverResult conjugate_gradient(int n, Apply apply, GlobalSum global_sum,
     const double rz = sums[RZ];
     const double beta = result.iterations == 0 ? 0.0 : rz / rz_old;
     const double curvature = sums[WZ] - beta * rz / alpha;    // (p, A p) of the new direction
-    if (!(curvature > 0.0) || !(rz > 0.0)) break;    // breakdown: A not positive (cannot happen for SPD A)
+    if (!(curvature > 0.0) || !(rz > 0.0))
+      break;    // breakdown: A not positive (cannot happen for SPD A)
     alpha = rz / curvature;
     rz_old = rz;
     for (int k = 0; k < n; k++) {

@@ -19,9 +19,9 @@ namespace etd {
 // One interacting pair, its geometry cached once per step so that every solver iteration
 // streams this compact array instead of the neighbor list.
 struct FrictionPair {
-  int i, j;             // atom indices (local or ghost)
-  float e[3];           // unit vector from j to i
-  float friction;       // gamma_ij w_D(r_ij) (special-bond factor included)
+  int i, j;          // atom indices (local or ghost)
+  float e[3];        // unit vector from j to i
+  float friction;    // gamma_ij w_D(r_ij) (special-bond factor included)
 };
 // Single precision halves what every solver iteration streams (24 bytes a pair), which is what
 // limits large systems. Both atoms of a pair use the same rounded numbers, so G stays exactly
@@ -36,7 +36,8 @@ struct FrictionPair {
 // One pair's share of G u on i, gamma w_D (e . (u_i - u_j)), along e (and the opposite on j).
 inline double pair_friction(const FrictionPair &p, const double *ui, const double *uj)
 {
-  return p.friction * (p.e[0] * (ui[0] - uj[0]) + p.e[1] * (ui[1] - uj[1]) + p.e[2] * (ui[2] - uj[2]));
+  return p.friction *
+      (p.e[0] * (ui[0] - uj[0]) + p.e[1] * (ui[1] - uj[1]) + p.e[2] * (ui[2] - uj[2]));
 }
 
 template <typename UpdateJ>
@@ -92,7 +93,8 @@ inline void accumulate_friction_by_runs(const std::vector<FrictionPair> &pairs,
       const FrictionPair &p = pair[n];
       const double *uj = u + Stride * p.j;
       const double e0 = p.e[0], e1 = p.e[1], e2 = p.e[2];
-      const double projected = scale * p.friction * (e0 * (ui0 - uj[0]) + e1 * (ui1 - uj[1]) + e2 * (ui2 - uj[2]));
+      const double projected =
+          scale * p.friction * (e0 * (ui0 - uj[0]) + e1 * (ui1 - uj[1]) + e2 * (ui2 - uj[2]));
       const double f0 = projected * e0, f1 = projected * e1, f2 = projected * e2;
       sum0 += f0;
       sum1 += f1;
@@ -114,8 +116,9 @@ inline void accumulate_friction_by_runs(const std::vector<FrictionPair> &pairs,
 // out_i += scale * sum_j noise_ij e_ij (and the opposite on j), noise_ij = sigma w_R theta: the
 // random impulse, which sums to zero over all atoms.
 template <typename UpdateJ>
-inline void accumulate_noise(const std::vector<FrictionPair> &pairs, const std::vector<double> &noise,
-                             double scale, double *out, UpdateJ update_j, int stride = 3)
+inline void accumulate_noise(const std::vector<FrictionPair> &pairs,
+                             const std::vector<double> &noise, double scale, double *out,
+                             UpdateJ update_j, int stride = 3)
 {
   for (size_t n = 0; n < pairs.size(); n++) {
     const FrictionPair &p = pairs[n];
@@ -178,7 +181,8 @@ struct FpmFrictionPair {
 
 // The generalised force of one pair given the pair force F on i: adds it with the given sign.
 template <typename UpdateJ>
-inline void scatter_fpm(const FpmFrictionPair &p, const double force[3], double *out, UpdateJ update_j)
+inline void scatter_fpm(const FpmFrictionPair &p, const double force[3], double *out,
+                        UpdateJ update_j)
 {
   const double t[3] = {-p.half_r * (p.e[1] * force[2] - p.e[2] * force[1]),
                        -p.half_r * (p.e[2] * force[0] - p.e[0] * force[2]),
@@ -207,7 +211,8 @@ inline void fpm_pair_friction(const FpmFrictionPair &p, const double *qi, const 
                        qi[1] - qj[1] + p.half_r * (p.e[2] * spin[0] - p.e[0] * spin[2]),
                        qi[2] - qj[2] + p.half_r * (p.e[0] * spin[1] - p.e[1] * spin[0])};
   const double shear = scale * p.shear;
-  const double normal = scale * (p.central - p.shear) * (p.e[0] * u[0] + p.e[1] * u[1] + p.e[2] * u[2]);
+  const double normal =
+      scale * (p.central - p.shear) * (p.e[0] * u[0] + p.e[1] * u[1] + p.e[2] * u[2]);
   for (int k = 0; k < 3; k++) force[k] = shear * u[k] + normal * p.e[k];
 }
 
@@ -240,8 +245,8 @@ inline void accumulate_image_offset(const FrictionPair &p, const double offset[3
 }
 
 template <typename UpdateJ>
-inline void accumulate_fpm_image_offset(const FpmFrictionPair &p, const double offset[3], double *out,
-                                        UpdateJ update_j)
+inline void accumulate_fpm_image_offset(const FpmFrictionPair &p, const double offset[3],
+                                        double *out, UpdateJ update_j)
 {
   const double at_rest[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   const double moving[6] = {offset[0], offset[1], offset[2], 0.0, 0.0, 0.0};
@@ -252,11 +257,13 @@ inline void accumulate_fpm_image_offset(const FpmFrictionPair &p, const double o
 
 // noise: 3 values per pair, the random force on i (without the time factor), times scale
 template <typename UpdateJ>
-inline void accumulate_fpm_noise(const std::vector<FpmFrictionPair> &pairs, const std::vector<double> &noise,
-                                 double scale, double *out, UpdateJ update_j)
+inline void accumulate_fpm_noise(const std::vector<FpmFrictionPair> &pairs,
+                                 const std::vector<double> &noise, double scale, double *out,
+                                 UpdateJ update_j)
 {
   for (size_t n = 0; n < pairs.size(); n++) {
-    const double force[3] = {scale * noise[3 * n], scale * noise[3 * n + 1], scale * noise[3 * n + 2]};
+    const double force[3] = {scale * noise[3 * n], scale * noise[3 * n + 1],
+                             scale * noise[3 * n + 2]};
     scatter_fpm(pairs[n], force, out, update_j);
   }
 }
@@ -265,7 +272,8 @@ inline void accumulate_fpm_noise(const std::vector<FpmFrictionPair> &pairs, cons
 // central e e + shear (1 - e e) and (r/2)^2 shear (1 - e e). (The v-Omega coupling within one
 // atom is left out of the preconditioner, which stays symmetric positive definite.)
 template <typename UpdateJ>
-inline void accumulate_fpm_blocks(const std::vector<FpmFrictionPair> &pairs, double *blocks, UpdateJ update_j)
+inline void accumulate_fpm_blocks(const std::vector<FpmFrictionPair> &pairs, double *blocks,
+                                  UpdateJ update_j)
 {
   for (const FpmFrictionPair &p : pairs) {
     const double ee[6] = {p.e[0] * p.e[0], p.e[1] * p.e[1], p.e[2] * p.e[2],

@@ -16,7 +16,8 @@ namespace etd {
 // directions) falls back to the inverse of its diagonal; false if even that is zero.
 inline bool invert_block(const double *block, double shift, double scale, double *inverse)
 {
-  const double a = shift + scale * block[0], d = shift + scale * block[1], f = shift + scale * block[2];
+  const double a = shift + scale * block[0], d = shift + scale * block[1],
+               f = shift + scale * block[2];
   const double b = scale * block[3], c = scale * block[4], e = scale * block[5];
   const double c00 = d * f - e * e, c01 = c * e - b * f, c02 = b * e - c * d;
   const double det = a * c00 + b * c01 + c * c02;
@@ -26,13 +27,22 @@ inline bool invert_block(const double *block, double shift, double scale, double
     const double diag[3] = {a, d, f};
     bool any = false;
     for (int k = 0; k < 3; k++)
-      if (diag[k] > 0.0) { inverse[4 * k] = 1.0 / diag[k]; any = true; }
+      if (diag[k] > 0.0) {
+        inverse[4 * k] = 1.0 / diag[k];
+        any = true;
+      }
     return any;
   }
   const double inv = 1.0 / det;
-  inverse[0] = c00 * inv; inverse[1] = c01 * inv; inverse[2] = c02 * inv;
-  inverse[3] = c01 * inv; inverse[4] = (a * f - c * c) * inv; inverse[5] = (b * c - a * e) * inv;
-  inverse[6] = c02 * inv; inverse[7] = (b * c - a * e) * inv; inverse[8] = (a * d - b * b) * inv;
+  inverse[0] = c00 * inv;
+  inverse[1] = c01 * inv;
+  inverse[2] = c02 * inv;
+  inverse[3] = c01 * inv;
+  inverse[4] = (a * f - c * c) * inv;
+  inverse[5] = (b * c - a * e) * inv;
+  inverse[6] = c02 * inv;
+  inverse[7] = (b * c - a * e) * inv;
+  inverse[8] = (a * d - b * b) * inv;
   return true;
 }
 
@@ -61,17 +71,17 @@ struct FrictionSolveWorkspace {
 // start (optional): the start vector (else the block-Jacobi solution); with it, start_friction
 // (optional) is G start, which saves one application of G.
 template <typename Mobile, typename ApplyFriction, typename GlobalSum>
-inline SolverResult solve_friction_system(const FrictionSystem &sys, Mobile mobile,
-                                          ApplyFriction apply_friction, GlobalSum global_sum,
-                                          const double *rhs_in, std::vector<double> &solution,
-                                          double tolerance, int max_iterations,
-                                          FrictionSolveWorkspace &work, const double *start = nullptr,
-                                          const double *start_friction = nullptr)
+inline SolverResult
+solve_friction_system(const FrictionSystem &sys, Mobile mobile, ApplyFriction apply_friction,
+                      GlobalSum global_sum, const double *rhs_in, std::vector<double> &solution,
+                      double tolerance, int max_iterations, FrictionSolveWorkspace &work,
+                      const double *start = nullptr, const double *start_friction = nullptr)
 {
   const int n = sys.n;
   const int nblocks = n / 3;
   const double *inertia = sys.inertia;
-  std::vector<double> &rhs = work.rhs, &inv_diag = work.inv_diag, &block_inverse = work.block_inverse;
+  std::vector<double> &rhs = work.rhs, &inv_diag = work.inv_diag,
+                      &block_inverse = work.block_inverse;
   rhs.assign(rhs_in, rhs_in + n);
 
   // block-Jacobi preconditioner: each block of mass_weight M + friction_weight G, inverted
@@ -100,7 +110,8 @@ inline SolverResult solve_friction_system(const FrictionSystem &sys, Mobile mobi
       if (inv_diag[k] != 0.0) sum[k % 3] += vec[k];
     global_sum(sum, 3);
     for (int k = 0; k < n; k++)
-      if (inv_diag[k] != 0.0 && active_count[k % 3] > 0.0) vec[k] -= sum[k % 3] / active_count[k % 3];
+      if (inv_diag[k] != 0.0 && active_count[k % 3] > 0.0)
+        vec[k] -= sum[k % 3] / active_count[k % 3];
   };
   if (sys.deflate && group_count > 0.0) remove_mean(rhs.data());
 
@@ -116,9 +127,9 @@ inline SolverResult solve_friction_system(const FrictionSystem &sys, Mobile mobi
   if (start && start_friction) {
     work.start_product.resize(n);
     for (int k = 0; k < n; k++)
-      work.start_product[k] = mobile(k / 3) ? sys.mass_weight * inertia[k] * start[k] +
-                                                  sys.friction_weight * start_friction[k]
-                                            : 0.0;
+      work.start_product[k] = mobile(k / 3)
+          ? sys.mass_weight * inertia[k] * start[k] + sys.friction_weight * start_friction[k]
+          : 0.0;
     start_product = work.start_product.data();
   }
   if (start) {
@@ -136,9 +147,11 @@ inline SolverResult solve_friction_system(const FrictionSystem &sys, Mobile mobi
   }
   const SolverResult result = conjugate_gradient(
       n, apply, global_sum, inv_diag.data(), rhs.data(), solution.data(), tolerance, max_iterations,
-      block_inverse.data(), [&](double *vec) {
+      block_inverse.data(),
+      [&](double *vec) {
         if (sys.deflate) remove_mean(vec);
-      }, &work.cg, start_product);
+      },
+      &work.cg, start_product);
   if (sys.deflate) remove_mean(solution.data());
   return result;
 }

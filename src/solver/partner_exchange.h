@@ -46,7 +46,8 @@ class PartnerExchange {
       if (sources_.empty() || sources_.back().rank != owner_rank[s]) {
         for (const Partner &earlier : sources_)
           if (earlier.rank == owner_rank[s])
-            throw std::invalid_argument("PartnerExchange: the slots of one owner must be consecutive");
+            throw std::invalid_argument(
+                "PartnerExchange: the slots of one owner must be consecutive");
         sources_.push_back({owner_rank[s], static_cast<int>(s), 0, {}});
       }
       sources_.back().count++;
@@ -63,8 +64,8 @@ class PartnerExchange {
 
     std::vector<MPI_Request> sent(sources_.size());
     for (size_t k = 0; k < sources_.size(); k++)
-      MPI_Isend(owner_index.data() + sources_[k].first, sources_[k].count, MPI_INT, sources_[k].rank,
-                request_tag, comm_, &sent[k]);
+      MPI_Isend(owner_index.data() + sources_[k].first, sources_[k].count, MPI_INT,
+                sources_[k].rank, request_tag, comm_, &sent[k]);
     targets_.resize(askers);
     for (Partner &t : targets_) {
       MPI_Status status;
@@ -85,8 +86,8 @@ class PartnerExchange {
     requests_.resize(sources_.size() + targets_.size());
     size_t n = 0;
     for (const Partner &p : sources_)
-      MPI_Irecv(values + static_cast<size_t>(width) * (offset + p.first), width * p.count, MPI_DOUBLE,
-                p.rank, values_tag, comm_, &requests_[n++]);
+      MPI_Irecv(values + static_cast<size_t>(width) * (offset + p.first), width * p.count,
+                MPI_DOUBLE, p.rank, values_tag, comm_, &requests_[n++]);
     size_t total = 0;
     for (const Partner &t : targets_) total += t.indices.size();
     send_buffer_.resize(width * total);
