@@ -18,26 +18,43 @@ def parse_args(argv=None):
     return parser.parse_args(argv)
 
 
+# fix etd scheme implicit's fifth output: the kinetic temperature right after the friction step
+FRICTION_STEP_COLUMN = "f_integrate[5]"
+
+
 def production_temperatures(text, log):
-    """Temp of the last thermo table of the log, its first row (the start) left out."""
+    """Temp of the last thermo table of the log, its first row (the start) left out, and the
+    friction-step temperature of the same rows where the table has it (else None)."""
     tables = thermo_tables(text, log)
     if not tables:
         sys.exit("no thermo output in " + log)
     last = tables[-1]
     if "Temp" not in last.names:
         sys.exit(f"no Temp column in the last thermo table of {log} (columns: {' '.join(last.names)})")
-    return last.column("Temp")[1:]
+    friction = last.get(FRICTION_STEP_COLUMN)
+    friction = None if friction is None else friction[1:]
+    return last.column("Temp")[1:], friction
 
 
-def print_summary(temps, loop, args):
+def temperature_line(label, temps, target):
     mean = float(np.mean(temps))
     spread = float(np.std(temps, ddof=1)) if len(temps) > 1 else 0.0
+    line = f"  {label}: {mean:.4f} (sample spread {spread:.4f}, {len(temps)} samples)"
+    if target:
+        line += f"; target {target}, deviation {100 * (mean / target - 1):+.2f} %"
+    return line
+
+
+def print_summary(temps, loop, args, friction_temps=None):
     print("ETD-DPD run summary")
     print(f"  atoms {loop.atoms}, MPI ranks {loop.procs}, steps {loop.steps}, loop time {loop.seconds:.2f} s")
-    line = f"  temperature (kBT) over the production run: {mean:.4f} (sample spread {spread:.4f}, {len(temps)} samples)"
-    if args.target_temperature:
-        line += f"; target {args.target_temperature}, deviation {100 * (mean / args.target_temperature - 1):+.2f} %"
-    print(line)
+    if friction_temps is None:
+        print(temperature_line("temperature (kBT) over the production run", temps, args.target_temperature))
+    else:
+        print(temperature_line("kBT over the production run, end-of-step velocities (thermo temp)", temps,
+                               args.target_temperature))
+        print(temperature_line("kBT over the production run, friction-step velocities (f_integrate[5])",
+                               friction_temps, args.target_temperature))
     print(f"  throughput: {loop.steps * loop.atoms / loop.seconds:.3e} atom-steps/s")
     if args.wall is not None:
         print(f"  wall-clock of the whole job: {args.wall:.1f} s")
@@ -54,8 +71,8 @@ def main(argv=None):
     if "ERROR" in text:
         print("\n".join(l for l in text.splitlines() if "ERROR" in l))
         sys.exit(1)
-    temps = production_temperatures(text, args.log)
-    print_summary(temps, loop_times(text)[-1], args)
+    temps, friction_temps = production_temperatures(text, args.log)
+    print_summary(temps, loop_times(text)[-1], args, friction_temps)
 
 
 if __name__ == "__main__":

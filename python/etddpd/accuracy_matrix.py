@@ -1,0 +1,279 @@
+"""The accuracy matrix (bench/accuracy/README.md): each cell (fluid, mass, integrator, dt) against
+stock velocity-Verlet at a small step, observable by observable, the largest step within
+tolerance, and the speed-up at equal accuracy.
+
+Records are the JSON lines of bench/accuracy/run.py: scan.jsonl (equilibrium observables per
+window) and timing.jsonl (loop times of alternated runs).
+"""
+import json
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .statistics import standard_error
+
+# the issue's tolerances: relative for kBT, P and D, absolute for g(r)
+TOLERANCE = {"kBT": 0.01, "kBT_friction": 0.01, "P": 0.01, "g(r)": 0.01, "D": 0.02}
+OBSERVABLES = ["kBT", "kBT_friction", "P", "g(r)", "D"]
+
+
+def read_jsonl(path):
+    with open(path) as lines:
+        return [json.loads(line) for line in lines if line.strip()]
+
+
+@dataclass
+class Deviation:
+    """One observable of one cell against the reference: value (relative, or absolute for g(r))
+    and its standard error from the windows of both runs."""
+    value: float
+    error: float
+
+    def within(self, tolerance):
+        return abs(self.value) <= tolerance
+
+
+@dataclass
+class Cell:
+    fluid: str
+    mass: float
+    integrator: str
+    dt: float
+    deviations: dict = field(default_factory=dict)
+    cg_iterations: float = None
+
+    def passes(self, observables):
+        return all(self.deviations[name].within(TOLERANCE[name])
+                   for name in observables if name in self.deviations)
+
+
+def _mean_error(blocks):
+    blocks = np.asarray(blocks, dtype=float)
+    return blocks.mean(), standard_error(blocks)
+
+
+def _relative(cell_blocks, ref_blocks):
+    mean, error = _mean_error(cell_blocks)
+    ref, ref_error = _mean_error(ref_blocks)
+    return Deviation(mean / ref - 1.0, np.hypot(error / ref, mean * ref_error / ref**2))
+
+
+def _rdf_deviation(cell, ref):
+    """Largest |g - g_ref| over the bins; its error: the combined standard error at that bin."""
+    g = np.asarray(cell["rdf_blocks"], dtype=float)
+    g_ref = np.asarray(ref["rdf_blocks"], dtype=float)
+    diff = g.mean(axis=0) - g_ref.mean(axis=0)
+    worst = int(np.argmax(np.abs(diff)))
+    error = np.hypot(standard_error(g[:, worst]), standard_error(g_ref[:, worst]))
+    return Deviation(abs(diff[worst]), error)
+
+
+def compare(cell, ref):
+    """The deviations of one scan record from the reference record of its fluid and mass.
+    kBT_friction: the implicit scheme's friction-step temperature (fix output 5), else the
+    end-of-step kBT (the other integrators have one temperature)."""
+    out = Cell(cell["fluid"], cell["mass"], cell["integrator"], cell["dt"],
+               cg_iterations=cell.get("cg_iterations"))
+    out.deviations["kBT"] = _relative(cell["T_blocks"], ref["T_blocks"])
+    out.deviations["kBT_friction"] = _relative(cell.get("T5_blocks", cell["T_blocks"]), ref["T_blocks"])
+    out.deviations["P"] = _relative(cell["P_blocks"], ref["P_blocks"])
+    out.deviations["g(r)"] = _rdf_deviation(cell, ref)
+    out.deviations["D"] = _relative(cell["D_blocks"], ref["D_blocks"])
+    return out
+
+
+def references(records):
+    """The reference record of each (fluid, mass): the last 'ref' run."""
+    refs = {}
+    for record in records:
+        if record.get("role") == "ref" and record.get("exit") == 0 and "T_blocks" in record:
+            refs[(record["fluid"], record["mass"])] = record
+    return refs
+
+
+def cells(records):
+    """Every completed scan cell compared with its reference (the last record of each
+    (fluid, mass, integrator, dt) counts)."""
+    refs = references(records)
+    latest = {}
+    for record in records:
+        if record.get("role") != "cell" or record.get("exit") != 0 or "T_blocks" not in record:
+            continue
+        latest[(record["fluid"], record["mass"], record["integrator"], record["dt"])] = record
+    out = []
+    for key, record in sorted(latest.items()):
+        ref = refs.get(key[:2])
+        if ref is not None:
+            out.append(compare(record, ref))
+    return out
+
+
+def largest_step(scan, observables):
+    """The largest dt of a scan (cells of one fluid, mass, integrator) such that it and every
+    smaller dt of the scan keep the observables within tolerance; None if the smallest fails."""
+    best = None
+    for cell in sorted(scan, key=lambda c: c.dt):
+        if not cell.passes(observables):
+            break
+        best = cell.dt
+    return best
+
+
+def limiting(scan, observables, dt):
+    """The observables that fail at the first scanned step beyond dt (what limits the cell)."""
+    beyond = [c for c in sorted(scan, key=lambda c: c.dt) if dt is None or c.dt > dt]
+    if not beyond:
+        return []
+    cell = beyond[0]
+    return [name for name in observables
+            if name in cell.deviations and not cell.deviations[name].within(TOLERANCE[name])]
+
+
+def cost_per_time_unit(timings):
+    """Seconds per time unit of each (fluid, mass, integrator, dt): the fastest of the alternated
+    rounds (other load only slows a run down)."""
+    best = {}
+    for record in timings:
+        if record.get("exit") != 0 or not record.get("s_per_tu"):
+            continue
+        key = (record["fluid"], record["mass"], record["integrator"], record["dt"])
+        best[key] = min(best.get(key, np.inf), record["s_per_tu"])
+    return best
+
+
+def group(cell_list):
+    """{(fluid, mass): {integrator: [cells]}}"""
+    out = {}
+    for cell in cell_list:
+        out.setdefault((cell.fluid, cell.mass), {}).setdefault(cell.integrator, []).append(cell)
+    return out
+
+
+INTEGRATOR_NAMES = {
+    "stock": "stock + nve",
+    "diag": "etd (diagonal)",
+    "imp": "etd implicit",
+    "impv": "etd implicit tol 1e-4 start velocity",
+}
+FLUID_NAMES = {"GW": "Groot-Warren, s = 2", "P": "papers', s = 1/2", "HS": "high Sc (dpd/design)"}
+
+
+def _format_dt(dt):
+    return "-" if dt is None else f"{dt:g}"
+
+
+def summary_rows(cell_list, costs=None, temperature="kBT"):
+    """One row per (fluid, mass, integrator): the largest step within tolerance on every
+    observable, the temperature taken as `temperature` ('kBT' end of step, or 'kBT_friction'),
+    what limits it, its cost per time unit where timed, and the speed-up over stock + nve."""
+    observables = [temperature, "P", "g(r)", "D"]
+    rows = []
+    for (fluid, mass), scans in sorted(group(cell_list).items()):
+        best = {name: largest_step(scan, observables) for name, scan in scans.items()}
+        cost = {}
+        for name, dt in best.items():
+            if costs is not None and dt is not None:
+                cost[name] = costs.get((fluid, mass, name, dt))
+        for name in INTEGRATOR_NAMES:
+            if name not in scans:
+                continue
+            dt = best[name]
+            speedup = None
+            if cost.get(name) and cost.get("stock"):
+                speedup = cost["stock"] / cost[name]
+            rows.append({"fluid": fluid, "mass": mass, "integrator": name, "dt": dt,
+                         "stock_dt": best.get("stock"),
+                         "step_ratio": (dt / best["stock"]) if dt and best.get("stock") else None,
+                         "limited_by": limiting(scans[name], observables, dt),
+                         "s_per_tu": cost.get(name), "speedup": speedup})
+    return rows
+
+
+def summary_table(rows):
+    lines = ["| fluid | m | integrator | largest dt | dt / stock's | limited by (next dt) | s per time unit | speed-up |",
+             "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        ratio = "-" if r["step_ratio"] is None else f"{r['step_ratio']:.1f}"
+        cost = "-" if r["s_per_tu"] is None else f"{r['s_per_tu']:.2f}"
+        speed = "-" if r["speedup"] is None else f"{r['speedup']:.2f}"
+        limited = ", ".join(r["limited_by"]) or "(none scanned beyond)"
+        lines.append(f"| {r['fluid']} | {r['mass']:g} | {INTEGRATOR_NAMES[r['integrator']]} | "
+                     f"{_format_dt(r['dt'])} | {ratio} | {limited} | {cost} | {speed} |")
+    return "\n".join(lines)
+
+
+def cell_table(cell_list):
+    """Every cell's deviations: relative for kBT, P, D (in %), absolute for g(r)."""
+    lines = ["| fluid | m | integrator | dt | kBT % | kBT friction step % | P % | max dg(r) | D % | CG it. |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for c in sorted(cell_list, key=lambda c: (c.fluid, -c.mass, list(INTEGRATOR_NAMES).index(c.integrator), c.dt)):
+        d = c.deviations
+
+        def pct(name):
+            mark = "" if d[name].within(TOLERANCE[name]) else " **x**"
+            return f"{100 * d[name].value:+.2f} +- {100 * d[name].error:.2f}{mark}"
+        g = d["g(r)"]
+        gmark = "" if g.within(TOLERANCE["g(r)"]) else " **x**"
+        friction = pct("kBT_friction") if c.integrator in ("imp", "impv") else "(same)"
+        it = "-" if c.cg_iterations is None else f"{c.cg_iterations:.1f}"
+        lines.append(f"| {c.fluid} | {c.mass:g} | {c.integrator} | {c.dt:g} | {pct('kBT')} | {friction} | "
+                     f"{pct('P')} | {g.value:.4f} +- {g.error:.4f}{gmark} | {pct('D')} | {it} |")
+    return "\n".join(lines)
+
+
+def plot(cell_list, directory):
+    """One figure per (fluid, mass): each observable's deviation against dt, per integrator, with
+    the tolerance band. Returns the files written."""
+    import os
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    written = []
+    for (fluid, mass), scans in sorted(group(cell_list).items()):
+        fig, axes = plt.subplots(1, len(OBSERVABLES), figsize=(4 * len(OBSERVABLES), 3.4))
+        for ax, name in zip(axes, OBSERVABLES):
+            scale = 1.0 if name == "g(r)" else 100.0
+            for integrator, scan in sorted(scans.items()):
+                if name == "kBT_friction" and integrator not in ("imp", "impv"):
+                    continue
+                scan = sorted(scan, key=lambda c: c.dt)
+                ax.errorbar([c.dt for c in scan], [scale * c.deviations[name].value for c in scan],
+                            yerr=[scale * c.deviations[name].error for c in scan], marker="o", ms=3,
+                            capsize=2, label=INTEGRATOR_NAMES[integrator])
+            tol = scale * TOLERANCE[name]
+            ax.axhspan(-tol if name != "g(r)" else 0, tol, color="0.9", zorder=0)
+            ax.set_xscale("log")
+            ax.set_xlabel("dt")
+            ax.set_title({"kBT": "kBT end of step (%)", "kBT_friction": "kBT friction step (%)",
+                          "P": "pressure (%)", "g(r)": "max |g - g_ref|", "D": "D (%)"}[name])
+        axes[0].legend(fontsize=7)
+        fig.suptitle(f"{FLUID_NAMES.get(fluid, fluid)}, m = {mass:g}: deviation from stock velocity-Verlet at a small step")
+        fig.tight_layout()
+        path = os.path.join(directory, f"accuracy_{fluid}_m{mass:g}.png")
+        fig.savefig(path, dpi=90)
+        plt.close(fig)
+        written.append(path)
+    return written
+
+
+def main(argv=None):
+    import argparse
+    import os
+    parser = argparse.ArgumentParser(description="Tables and plots of the accuracy matrix (bench/accuracy).")
+    parser.add_argument("results", help="folder with scan.jsonl (and timing.jsonl)")
+    parser.add_argument("--figures", help="folder for the error-against-dt plots")
+    args = parser.parse_args(argv)
+    cell_list = cells(read_jsonl(os.path.join(args.results, "scan.jsonl")))
+    timing = os.path.join(args.results, "timing.jsonl")
+    costs = cost_per_time_unit(read_jsonl(timing)) if os.path.exists(timing) else None
+    print("## Largest step within tolerance on every observable (end-of-step kBT)\n")
+    print(summary_table(summary_rows(cell_list, costs, "kBT")))
+    print("\n## The same with the friction-step kBT as the implicit scheme's temperature\n")
+    print(summary_table(summary_rows(cell_list, costs, "kBT_friction")))
+    print("\n## Every cell\n")
+    print(cell_table(cell_list))
+    if args.figures:
+        os.makedirs(args.figures, exist_ok=True)
+        for path in plot(cell_list, args.figures):
+            print(f"\nwrote {path}")
+    return 0

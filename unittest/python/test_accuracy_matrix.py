@@ -1,0 +1,106 @@
+#!/usr/bin/python3
+"""python/etddpd/accuracy_matrix.py on synthetic scan records with known deviations: relative and
+absolute deviations and their errors, the largest step of a scan (it and every smaller step within
+tolerance), what limits it, the friction-step temperature as the implicit scheme's criterion, the
+speed-up from the timings, and the tables and plots written."""
+import json
+import os
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from etddpd import accuracy_matrix as am  # noqa: E402
+
+R = [0.1 * k for k in range(1, 11)]
+G_REF = [1.0] * 10
+
+
+def record(integrator, dt, T, P, D, g_shift=0.0, T5=None, role="cell"):
+    # two windows each, symmetric about the mean: the standard error is |a - b| / 2
+    out = {"fluid": "GW", "mass": 0.01, "integrator": integrator, "dt": dt, "role": role, "exit": 0,
+           "T_blocks": [T - 0.001, T + 0.001], "P_blocks": [P - 0.01, P + 0.01],
+           "D_blocks": [D - 0.002, D + 0.002], "rdf_r": R,
+           "rdf_blocks": [[g + g_shift for g in G_REF], [g + g_shift for g in G_REF]]}
+    if T5 is not None:
+        out["T5_blocks"] = [T5, T5]
+        out["cg_iterations"] = 9.5
+    return out
+
+
+def scan_records():
+    return [
+        record("stock", 0.0001, 1.0, 20.0, 1.0, role="ref"),
+        record("stock", 0.0003, 1.002, 20.05, 1.005),
+        record("stock", 0.0005, 1.008, 20.1, 1.01),
+        record("stock", 0.0007, 1.015, 20.15, 1.012),    # kBT +1.5 %: limits stock at 0.0005
+        record("imp", 0.002, 0.996, 19.9, 0.99, T5=1.0),
+        record("imp", 0.003, 0.985, 19.85, 0.99, T5=1.001),    # end-of-step kBT -1.5 %
+        record("imp", 0.004, 0.98, 19.81, 0.985, g_shift=0.02, T5=1.002),    # g(r) off by 0.02
+    ]
+
+
+class AccuracyMatrix(unittest.TestCase):
+    def setUp(self):
+        self.cells = am.cells(scan_records())
+
+    def cell(self, integrator, dt):
+        return next(c for c in self.cells if c.integrator == integrator and c.dt == dt)
+
+    def test_deviations(self):
+        c = self.cell("stock", 0.0007)
+        self.assertAlmostEqual(c.deviations["kBT"].value, 0.015, places=12)
+        self.assertAlmostEqual(c.deviations["P"].value, 0.0075, places=12)
+        self.assertAlmostEqual(c.deviations["D"].value, 0.012, places=12)
+        # errors: both runs' standard errors combined (0.001 each for T, relative)
+        self.assertAlmostEqual(c.deviations["kBT"].error, np.hypot(0.001 / 1.0, 1.015 * 0.001), places=9)
+        self.assertAlmostEqual(self.cell("imp", 0.004).deviations["g(r)"].value, 0.02, places=12)
+        self.assertEqual(len(self.cells), 6)    # the reference is not a cell
+
+    def test_largest_step_and_what_limits_it(self):
+        rows = {r["integrator"]: r for r in am.summary_rows(self.cells, temperature="kBT")}
+        self.assertEqual(rows["stock"]["dt"], 0.0005)
+        self.assertEqual(rows["stock"]["limited_by"], ["kBT"])
+        self.assertEqual(rows["imp"]["dt"], 0.002)
+        self.assertEqual(rows["imp"]["limited_by"], ["kBT"])
+        self.assertAlmostEqual(rows["imp"]["step_ratio"], 4.0)
+
+    def test_friction_step_temperature_criterion(self):
+        rows = {r["integrator"]: r for r in am.summary_rows(self.cells, temperature="kBT_friction")}
+        self.assertEqual(rows["imp"]["dt"], 0.003)
+        self.assertEqual(rows["imp"]["limited_by"], ["g(r)"])
+        self.assertEqual(rows["stock"]["dt"], 0.0005)    # stock has one temperature
+
+    def test_a_failing_smallest_step_gives_none(self):
+        bad = scan_records()[:1] + [record("diag", 0.001, 1.05, 20.0, 1.0)]
+        rows = am.summary_rows(am.cells(bad))
+        self.assertIsNone(rows[0]["dt"])
+        self.assertEqual(rows[0]["limited_by"], ["kBT"])
+
+    def test_speedup_from_fastest_round(self):
+        timings = [
+            {"fluid": "GW", "mass": 0.01, "integrator": "stock", "dt": 0.0005, "exit": 0, "s_per_tu": 10.0},
+            {"fluid": "GW", "mass": 0.01, "integrator": "stock", "dt": 0.0005, "exit": 0, "s_per_tu": 12.0},
+            {"fluid": "GW", "mass": 0.01, "integrator": "imp", "dt": 0.002, "exit": 0, "s_per_tu": 4.0},
+        ]
+        rows = {r["integrator"]: r for r in am.summary_rows(self.cells, am.cost_per_time_unit(timings))}
+        self.assertAlmostEqual(rows["imp"]["speedup"], 2.5)
+        self.assertIn("| 2.50 |", am.summary_table(list(rows.values())))
+
+    def test_tables_and_plots(self):
+        with tempfile.TemporaryDirectory() as folder:
+            with open(os.path.join(folder, "scan.jsonl"), "w") as out:
+                for r in scan_records():
+                    out.write(json.dumps(r) + "\n")
+            figures = os.path.join(folder, "figures")
+            self.assertEqual(am.main([folder, "--figures", figures]), 0)
+            self.assertTrue(os.path.getsize(os.path.join(figures, "accuracy_GW_m0.01.png")) > 1000)
+        table = am.cell_table(self.cells)
+        self.assertIn("**x**", table)
+        self.assertEqual(table.count("\n"), 1 + len(self.cells))
+
+
+if __name__ == "__main__":
+    unittest.main()
