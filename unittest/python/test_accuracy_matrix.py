@@ -89,6 +89,26 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertAlmostEqual(rows["imp"]["speedup"], 2.5)
         self.assertIn("| 2.50 |", am.summary_table(list(rows.values())))
 
+    def test_rdf_deviation_counts_only_what_the_runs_resolve(self):
+        ref = scan_records()[0]
+        steady = record("diag", 0.001, 1.0, 20.0, 1.0, g_shift=0.015)
+        noisy = dict(steady, rdf_blocks=[[g + 0.055 for g in G_REF], [g - 0.025 for g in G_REF]])
+        self.assertFalse(am.compare(steady, ref).deviations["g(r)"].within(0.01))
+        deviation = am.compare(noisy, ref).deviations["g(r)"]
+        self.assertAlmostEqual(deviation.value, 0.015, places=12)
+        self.assertAlmostEqual(deviation.error, 0.04, places=12)
+        self.assertTrue(deviation.within(0.01))
+
+    def test_guide_axes(self):
+        # Groot-Warren: [w_D] = 8 pi / 60 for s = 2, rc = 1, so Gamma = 4.5 * 3 * (8 pi / 60) / 3
+        gamma_gw = 4.5 * 3.0 * (8.0 * np.pi / 60.0) / 3.0
+        self.assertAlmostEqual(am.friction_coefficient("GW"), gamma_gw, places=12)
+        z, travel = am.stiffness("GW", 0.01, 0.005)
+        self.assertAlmostEqual(z, gamma_gw * 0.5, places=12)
+        self.assertAlmostEqual(travel, 0.05, places=12)
+        # s = 1/2: [w_D] = 8 pi / (1.5 * 2.5 * 3.5)
+        self.assertAlmostEqual(am.friction_coefficient("P"), 4.5 * 4.0 * 8.0 * np.pi / 13.125 / 3.0, places=12)
+
     def test_tables_and_plots(self):
         with tempfile.TemporaryDirectory() as folder:
             with open(os.path.join(folder, "scan.jsonl"), "w") as out:
@@ -97,6 +117,7 @@ class AccuracyMatrix(unittest.TestCase):
             figures = os.path.join(folder, "figures")
             self.assertEqual(am.main([folder, "--figures", figures]), 0)
             self.assertTrue(os.path.getsize(os.path.join(figures, "accuracy_GW_m0.01.png")) > 1000)
+            self.assertTrue(os.path.getsize(os.path.join(figures, "guide_map.png")) > 1000)
         table = am.cell_table(self.cells)
         self.assertIn("**x**", table)
         self.assertEqual(table.count("\n"), 1 + len(self.cells))

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# The scans behind results/scan.jsonl (README.md). One line per cell: its dt list; "ref" runs are
+# stock velocity-Verlet at a small step with 16 windows. Usage:
+#   bash bench/accuracy/campaign.sh FLUID [MASS ...]     FLUID = GW, P or HS; masses 1 0.1 0.01 0.001
+# (each fluid's lines are independent: run two fluids side by side on two cores).
+set -u
+cd "$(dirname "$0")"
+R="/usr/bin/python3 run.py scan"
+fluid=${1:?usage: campaign.sh GW|P|HS [MASS ...]}
+shift
+masses=${*:-1 0.1 0.01 0.001}
+for m in $masses; do
+  case "$fluid:$m" in
+  # the high-Sc fluid's friction rate Gamma/m is 35 times GW's (Gamma = 66.7 against 1.9): its
+  # steps scale down by that, and a reference at Gamma dt / m = 0.03 below m = 0.1 would take
+  # 10^6 steps of a 4,000-atom rc = 1.5 fluid (README.md)
+  HS:1)
+    $R --fluid HS --mass 1 --integrator stock --dt 0.0005 --role ref --windows 16
+    $R --fluid HS --mass 1 --integrator stock --dt 0.001 0.002 0.003 0.005
+    $R --fluid HS --mass 1 --integrator diag --dt 0.002 0.005 0.01 0.02
+    $R --fluid HS --mass 1 --integrator imp --dt 0.005 0.01 0.02 0.03 0.04 ;;
+  HS:0.1)
+    $R --fluid HS --mass 0.1 --integrator stock --dt 0.00005 --role ref --windows 16
+    $R --fluid HS --mass 0.1 --integrator stock --dt 0.0001 0.0002 0.0003 0.0005
+    $R --fluid HS --mass 0.1 --integrator diag --dt 0.0002 0.0005 0.001 0.002
+    $R --fluid HS --mass 0.1 --integrator imp --dt 0.001 0.002 0.004 0.007 0.01
+    $R --fluid HS --mass 0.1 --integrator impv --dt 0.002 0.004 0.007 0.01 ;;
+  HS:*) echo "HS: mass $m not in the matrix (its reference is out of reach, README.md)" ;;
+  *:1)
+    $R --fluid "$fluid" --mass 1 --integrator stock --dt 0.001 --role ref --windows 16
+    $R --fluid "$fluid" --mass 1 --integrator stock --dt 0.005 0.01 0.02 0.03 0.04
+    $R --fluid "$fluid" --mass 1 --integrator diag --dt 0.01 0.02 0.03 0.04
+    $R --fluid "$fluid" --mass 1 --integrator imp --dt 0.01 0.02 0.03 0.04 ;;
+  *:0.1)
+    $R --fluid "$fluid" --mass 0.1 --integrator stock --dt 0.0003 --role ref --windows 16
+    $R --fluid "$fluid" --mass 0.1 --integrator stock --dt 0.002 0.003 0.005 0.007 0.01
+    $R --fluid "$fluid" --mass 0.1 --integrator diag --dt 0.003 0.005 0.007 0.01
+    $R --fluid "$fluid" --mass 0.1 --integrator imp --dt 0.005 0.007 0.01 0.015 0.02 ;;
+  *:0.01)
+    $R --fluid "$fluid" --mass 0.01 --integrator stock --dt 0.0001 --role ref --windows 16
+    $R --fluid "$fluid" --mass 0.01 --integrator stock --dt 0.0003 0.0005 0.0007 0.001
+    $R --fluid "$fluid" --mass 0.01 --integrator diag --dt 0.0005 0.001 0.002 0.003
+    $R --fluid "$fluid" --mass 0.01 --integrator imp --dt 0.002 0.003 0.004 0.005 0.007
+    $R --fluid "$fluid" --mass 0.01 --integrator impv --dt 0.003 0.004 0.005 0.007 ;;
+  *:0.001)
+    $R --fluid "$fluid" --mass 0.001 --integrator stock --dt 0.00003 --role ref --windows 16
+    $R --fluid "$fluid" --mass 0.001 --integrator stock --dt 0.0001 0.00015 0.0002 0.0003
+    $R --fluid "$fluid" --mass 0.001 --integrator diag --dt 0.0001 0.0002 0.0003 0.0005
+    $R --fluid "$fluid" --mass 0.001 --integrator imp --dt 0.0005 0.0007 0.001 0.0015 0.002
+    $R --fluid "$fluid" --mass 0.001 --integrator impv --dt 0.0007 0.001 0.0015 0.002 ;;
+  esac
+done

@@ -1,0 +1,323 @@
+#!/usr/bin/python3
+"""Driver of the accuracy matrix (bench/accuracy/README.md).
+
+Sub-commands (each appends one JSON line per LAMMPS run to bench/accuracy/results/):
+
+  equilibrate  --fluid F                  random start -> /tmp/accuracy/F.data (m = 1, dpd/gen + nve)
+  scan         --fluid F --mass M --integrator I --dt DT [DT ...] [--windows W --window T] [--role ref]
+               equilibrium observables (in.accuracy): kBT, friction-step kBT, P, g(r), D
+               -> results/scan.jsonl
+  time         --fluid F --mass M --cell I:DT [I:DT ...] [--repeats R --steps N]
+               cost: the cells alternated, R rounds, loop time of N steps each (no observables)
+               -> results/timing.jsonl
+  viscosity    --fluid F --mass M --integrator I --dt DT [--time T --equil T --force G]
+               reverse Poiseuille flow (in.viscosity) -> results/viscosity.jsonl
+
+Integrators (I): stock = stock pair style (dpd for GW, dpd/ext for P and HS) + fix nve;
+diag = dpd/gen + fix etd; imp = dpd/gen + fix etd scheme implicit; impv = dpd/gen + fix etd
+scheme implicit tol 1e-4 start velocity.  LAMMPS runs with nice -n 5 on one rank; the plugin is
+the copy /tmp/accuracy/etddpdplugin.so (copy it there first; the build folder's is rebuilt).
+"""
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time as clock
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from etddpd.lammps_output import loop_times, read_ave_time, read_ave_time_vector  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+RESULTS = os.path.join(HERE, "results")
+LMP = os.environ.get("LMP", os.path.expanduser("~/.cache/etd-dpd/lammps-29Sep2021-7ef1f1e9ad/bin/lmp"))
+PLUGIN = os.environ.get("PLUGIN", "/tmp/accuracy/etddpdplugin.so")
+WORK = os.environ.get("WORK", "/tmp/accuracy/runs")
+
+INTEGRATORS = {
+    "stock": ("stock", "nve"),
+    "diag": ("gen", "etd"),
+    "imp": ("gen", "etd scheme implicit"),
+    "impv": ("gen", "etd scheme implicit tol 1e-4 start velocity"),
+    "gennve": ("gen", "nve"),
+}
+
+
+def lammps(inp, variables, workdir, log="log.lammps", ranks=1):
+    os.makedirs(workdir, exist_ok=True)
+    if variables.get("data", "no") != "no":
+        shutil.copy(variables["data"], os.path.join(workdir, "start.data"))
+        variables = dict(variables, data="yes")
+    mpi = []
+    if ranks > 1:
+        mpi = ["mpirun", "-np", str(ranks)] + (["--allow-run-as-root"] if os.geteuid() == 0 else [])
+    cmd = ["nice", "-n", "5"] + mpi + [LMP, "-in", os.path.join(HERE, inp), "-screen", "none", "-log", log]
+    for key, value in variables.items():
+        cmd += ["-var", key, str(value)]
+    start = clock.time()
+    done = subprocess.run(cmd, cwd=workdir)
+    wall = clock.time() - start
+    text = open(os.path.join(workdir, log)).read() if os.path.exists(os.path.join(workdir, log)) else ""
+    if done.returncode != 0:
+        print(f"FAILED (exit {done.returncode}): {' '.join(cmd)} in {workdir}", file=sys.stderr)
+        print("\n".join(text.splitlines()[-4:]), file=sys.stderr)
+    return done.returncode, text, wall
+
+
+def read_blocks(path):
+    """fix ave/time scalar output without its TimeStep column: data[row, value]."""
+    return read_ave_time(path).data[:, 1:]
+
+
+def read_rdf(path):
+    """compute rdf through fix ave/time mode vector (columns Row, r, g): r and g[block, bin]."""
+    blocks = read_ave_time_vector(path).data
+    return blocks[0, :, 1], blocks[:, :, 2]
+
+
+# D is read off the MSD at one fixed time for every cell, whatever its step: the windows' lengths
+# differ slightly between steps (a whole number of steps and sampling intervals), and the MSD
+# over a window still holds some of the short-time (ballistic) part, so MSD(t_w) / 6 t_w would
+# depend on t_w. DIFFUSION_TIME is below the shortest window of any scan (0.8 of the nominal).
+DIFFUSION_TIME = 0.2
+
+
+def diffusion(path, dt, at=DIFFUSION_TIME):
+    """(MSD(at) / (6 at) by linear interpolation, slope of the MSD over the window's second half
+    / 6) of one window."""
+    data = read_ave_time(path).data
+    t = (data[:, 0] - data[0, 0]) * dt
+    msd = data[:, 1]
+    if t[-1] < at:
+        raise ValueError(f"{path}: window of {t[-1]} time units is shorter than {at}")
+    half = t >= 0.5 * t[-1]
+    slope = np.polyfit(t[half], msd[half], 1)[0]
+    return np.interp(at, t, msd) / (6.0 * at), slope / 6.0
+
+
+def steps_for(window, dt, stride, msdstride):
+    """Steps per window: a multiple of both sampling intervals, at least window / dt (the
+    diffusion is read at DIFFUSION_TIME inside it)."""
+    lcm = int(np.lcm(stride, msdstride))
+    return lcm * max(1, int(np.ceil(window / (dt * lcm) - 1e-9)))
+
+
+def append(name, record):
+    os.makedirs(RESULTS, exist_ok=True)
+    with open(os.path.join(RESULTS, name), "a") as out:
+        out.write(json.dumps(record) + "\n")
+
+
+def tag_of(*parts):
+    return "_".join(str(p).replace(" ", "") for p in parts)
+
+
+def cmd_equilibrate(args):
+    work = os.path.join(WORK, tag_of("equil", args.fluid))
+    rc, text, wall = lammps("in.accuracy", {"plugin": PLUGIN, "fluid": args.fluid, "pair": "gen",
+                                            "integrator": "nve", "mass": 1.0, "dt": 0.005, "nequil": round(args.time / 0.005),
+                                            "windows": 1, "nwin": 100, "stride": 10, "msdstride": 10,
+                                            "write": "yes"}, work)
+    if rc == 0:
+        shutil.copy(os.path.join(work, "final.data"), f"/tmp/accuracy/{args.fluid}.data")
+
+
+def cmd_scan(args):
+    pair, integrator = INTEGRATORS[args.integrator]
+    for dt in args.dt:
+        # the MSD about 100 times a window, g(r) about every 0.01 time units, at a multiple of
+        # the MSD's interval (so that the window, a multiple of both, stays near its length)
+        msdstride = max(1, round(args.window / dt / 100))
+        stride = msdstride * max(1, round(0.01 / dt / msdstride))
+        nwin = steps_for(args.window, dt, stride, msdstride)
+        implicit = "implicit" in integrator
+        work = os.path.join(WORK, tag_of("scan", args.fluid, args.mass, args.integrator, dt, args.seed, args.role))
+        if os.path.isdir(work):
+            shutil.rmtree(work)
+        variables = {"plugin": PLUGIN, "fluid": args.fluid, "pair": pair, "integrator": integrator,
+                     "mass": args.mass, "dt": dt, "data": f"/tmp/accuracy/{args.fluid}.data",
+                     "nequil": nwin * max(1, round(args.equil / (nwin * dt))),
+                     "windows": args.windows, "nwin": nwin, "stride": stride, "msdstride": msdstride,
+                     "seed": args.seed, "friction_step": "yes" if implicit else "no"}
+        rc, text, wall = lammps("in.accuracy", variables, work)
+        record = {"fluid": args.fluid, "mass": args.mass, "integrator": args.integrator, "fix": integrator,
+                  "pair": pair, "dt": dt, "role": args.role, "seed": args.seed, "equil": args.equil,
+                  "windows": args.windows, "nwin": nwin, "window_time": nwin * dt, "stride": stride,
+                  "msdstride": msdstride, "exit": rc, "wall": round(wall, 2), "date": clock.strftime("%Y-%m-%d %H:%M")}
+        try:
+            blocks = read_blocks(os.path.join(work, "blocks.txt"))
+            record["T_blocks"] = blocks[:, 0].tolist()
+            record["P_blocks"] = blocks[:, 1].tolist()
+            if implicit:
+                record["T5_blocks"] = blocks[:, 2].tolist()
+            r, g = read_rdf(os.path.join(work, "rdf.txt"))
+            record["rdf_r"] = r.tolist()
+            record["rdf_blocks"] = g.tolist()
+            d = [diffusion(os.path.join(work, f"msd.{w}.txt"), dt) for w in range(1, len(blocks) + 1)]
+            record["D_blocks"] = [x[0] for x in d]
+            record["Dslope_blocks"] = [x[1] for x in d]
+            iters = re.search(r"ITERATIONS=([0-9.]+)", text)
+            if iters:
+                record["cg_iterations"] = float(iters.group(1))
+            loops = loop_times(text)
+            record["loop_production"] = sum(loop.seconds for loop in loops[1:])
+        except (OSError, ValueError, IndexError) as error:
+            record["error"] = str(error)
+        append("scan.jsonl", record)
+        T = np.array(record.get("T_blocks", [np.nan]))
+        P = np.array(record.get("P_blocks", [np.nan]))
+        D = np.array(record.get("D_blocks", [np.nan]))
+        err = lambda x: np.std(x, ddof=1) / np.sqrt(len(x)) if len(x) > 1 else np.nan  # noqa: E731
+        extra = ""
+        if "T5_blocks" in record:
+            extra = f" T5={np.mean(record['T5_blocks']):.4f}"
+        print(f"{args.fluid} m={args.mass} {args.integrator} dt={dt} [{args.role}] exit={rc} wall={wall:.0f}s "
+              f"T={T.mean():.4f}+-{err(T):.4f}{extra} P={P.mean():.3f}+-{err(P):.3f} "
+              f"D={D.mean():.4f}+-{err(D):.4f} it={record.get('cg_iterations', '-')}", flush=True)
+
+
+def cmd_time(args):
+    cells = []
+    for spec in args.cell:
+        name, dt = spec.split(":")
+        cells.append((name, float(dt)))
+    for round_ in range(args.repeats):
+        for name, dt in cells:
+            pair, integrator = INTEGRATORS[name]
+            work = os.path.join(WORK, tag_of("time", args.fluid, args.mass, name, dt))
+            variables = {"plugin": PLUGIN, "fluid": args.fluid, "pair": pair, "integrator": integrator,
+                         "mass": args.mass, "dt": dt, "data": f"/tmp/accuracy/{args.fluid}.data",
+                         "nequil": args.equil_steps, "windows": 1, "nwin": args.steps, "stride": 1,
+                         "msdstride": 1, "timing": "yes"}
+            rc, text, wall = lammps("in.accuracy", variables, work, ranks=args.ranks)
+            loops = loop_times(text)
+            loop, nsteps = (loops[-1].seconds, loops[-1].steps) if loops else (float("nan"), 0)
+            load = os.getloadavg()[0]
+            record = {"fluid": args.fluid, "mass": args.mass, "integrator": name, "fix": integrator, "dt": dt,
+                      "ranks": args.ranks, "round": round_, "sitting": args.sitting, "steps": nsteps, "loop": loop,
+                      "s_per_tu": loop / (nsteps * dt) if nsteps else None, "load1": load, "exit": rc,
+                      "date": clock.strftime("%Y-%m-%d %H:%M")}
+            append("timing.jsonl", record)
+            print(f"time {args.fluid} m={args.mass} {name} dt={dt} round {round_}: loop {loop:.2f} s / {nsteps} "
+                  f"steps = {record['s_per_tu']:.2f} s per time unit (load {load:.2f})", flush=True)
+
+
+VISCOSITY_FORCE = {"GW": 0.02, "P": 0.3, "HS": 3.0}
+
+
+def cmd_time_matrix(args):
+    """Times every integrator of each (fluid, mass) of the scans at its largest step (both
+    temperature criteria), alternated in rounds."""
+    from etddpd import accuracy_matrix as am
+    cell_list = am.cells(am.read_jsonl(os.path.join(RESULTS, "scan.jsonl")))
+    steps = {}
+    for temperature in ("kBT", "kBT_friction"):
+        for row in am.summary_rows(cell_list, temperature=temperature):
+            if row["dt"] is not None and (not args.fluid or row["fluid"] in args.fluid) \
+                    and (not args.mass or row["mass"] in args.mass):
+                steps.setdefault((row["fluid"], row["mass"]), set()).add((row["integrator"], row["dt"]))
+    for (fluid, mass), cells in sorted(steps.items()):
+        spec = [f"{name}:{dt}" for name, dt in sorted(cells)]
+        print(f"time {fluid} m={mass}: {' '.join(spec)}", flush=True)
+        cmd_time(argparse.Namespace(fluid=fluid, mass=mass, cell=spec, repeats=args.repeats,
+                                    steps=args.steps, equil_steps=args.equil_steps, sitting=args.sitting,
+                                    ranks=args.ranks))
+
+
+def cmd_viscosity(args):
+    pair, integrator = INTEGRATORS[args.integrator]
+    if args.force is None:
+        args.force = VISCOSITY_FORCE[args.fluid]
+    work = os.path.join(WORK, tag_of("visc", args.fluid, args.mass, args.integrator, args.dt, args.seed))
+    if os.path.isdir(work):
+        shutil.rmtree(work)
+    variables = {"plugin": PLUGIN, "fluid": args.fluid, "pair": pair, "integrator": integrator, "mass": args.mass,
+                 "dt": args.dt, "data": f"/tmp/accuracy/{args.fluid}.data", "equil": args.equil,
+                 "time": args.time, "g": args.force, "seed": args.seed, "blocks": args.blocks}
+    rc, text, wall = lammps("in.viscosity", variables, work)
+    from etddpd.lammps_output import read_ave_chunk  # noqa: E402
+    from etddpd.viscosity_fit import fit_viscosity  # noqa: E402
+    record = {"fluid": args.fluid, "mass": args.mass, "integrator": args.integrator, "fix": integrator,
+              "dt": args.dt, "time": args.time, "equil": args.equil, "force": args.force, "seed": args.seed,
+              "exit": rc, "wall": round(wall, 2), "date": clock.strftime("%Y-%m-%d %H:%M")}
+    try:
+        density = 3.0 if args.fluid == "GW" else 4.0
+        profiles = read_ave_chunk(os.path.join(work, "profile.txt")).data
+        etas = []
+        for block in profiles:
+            eta, _ = fit_viscosity(block[:, 1], block[:, 3], args.force, 10.0, density)
+            etas.append(eta)
+        mean_profile = np.mean(profiles, axis=0)
+        eta, fit_error = fit_viscosity(mean_profile[:, 1], mean_profile[:, 3], args.force, 10.0, density)
+        record.update({"eta": eta, "eta_fit_error": fit_error, "eta_blocks": etas})
+        m = re.search(r"RESULT .*kBT=([0-9.]+)", text)
+        record["kBT"] = float(m.group(1)) if m else None
+    except (OSError, ValueError, IndexError) as error:
+        record["error"] = str(error)
+    append("viscosity.jsonl", record)
+    if "eta" in record:
+        e = np.array(record["eta_blocks"])
+        print(f"visc {args.fluid} m={args.mass} {args.integrator} dt={args.dt}: eta={record['eta']:.4f} "
+              f"(fit +-{record['eta_fit_error']:.4f}, blocks {e.mean():.4f}+-{e.std(ddof=1) / np.sqrt(len(e)):.4f}) "
+              f"kBT={record['kBT']} wall={wall:.0f}s", flush=True)
+
+
+def parse_args(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("equilibrate")
+    p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
+    p.add_argument("--time", type=float, default=5.0)
+    p = sub.add_parser("scan")
+    p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
+    p.add_argument("--mass", type=float, required=True)
+    p.add_argument("--integrator", required=True, choices=sorted(INTEGRATORS))
+    p.add_argument("--dt", type=float, nargs="+", required=True)
+    p.add_argument("--windows", type=int, default=8)
+    p.add_argument("--window", type=float, default=0.25, help="time units per window (block)")
+    p.add_argument("--equil", type=float, default=0.2, help="time units of equilibration")
+    p.add_argument("--role", default="cell", choices=["cell", "ref"])
+    p.add_argument("--seed", type=int, default=9823)
+    p = sub.add_parser("time")
+    p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
+    p.add_argument("--mass", type=float, required=True)
+    p.add_argument("--cell", nargs="+", required=True, help="INTEGRATOR:DT")
+    p.add_argument("--repeats", type=int, default=3)
+    p.add_argument("--steps", type=int, default=400)
+    p.add_argument("--equil-steps", type=int, default=50)
+    p.add_argument("--ranks", type=int, default=1)
+    p.add_argument("--sitting", default=clock.strftime("%H%M"))
+    p = sub.add_parser("time-matrix")
+    p.add_argument("--fluid", nargs="*", choices=["GW", "P", "HS"])
+    p.add_argument("--mass", type=float, nargs="*")
+    p.add_argument("--repeats", type=int, default=3)
+    p.add_argument("--steps", type=int, default=400)
+    p.add_argument("--equil-steps", type=int, default=50)
+    p.add_argument("--ranks", type=int, default=1)
+    p.add_argument("--sitting", default=clock.strftime("%H%M"))
+    p = sub.add_parser("viscosity")
+    p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
+    p.add_argument("--mass", type=float, required=True)
+    p.add_argument("--integrator", required=True, choices=sorted(INTEGRATORS))
+    p.add_argument("--dt", type=float, required=True)
+    p.add_argument("--time", type=float, default=20.0)
+    p.add_argument("--equil", type=float, default=1.0)
+    p.add_argument("--force", type=float, default=None,
+                   help="body force per atom (default: about 1.2-2 peak flow speed: GW 0.02, P 0.3, HS 3)")
+    p.add_argument("--blocks", type=int, default=5)
+    p.add_argument("--seed", type=int, default=0)
+    return parser.parse_args(argv)
+
+
+def main(argv=None):
+    args = parse_args(argv)
+    {"equilibrate": cmd_equilibrate, "scan": cmd_scan, "time": cmd_time, "time-matrix": cmd_time_matrix,
+     "viscosity": cmd_viscosity}[args.command](args)
+
+
+if __name__ == "__main__":
+    main()
