@@ -16,9 +16,9 @@ for m in $masses; do
   # 10^6 steps of a 4,000-atom rc = 1.5 fluid (README.md)
   HS:1)
     $R --fluid HS --mass 1 --integrator stock --dt 0.0005 --role ref --windows 16
-    $R --fluid HS --mass 1 --integrator stock --dt 0.001 0.002 0.003 0.005
+    $R --fluid HS --mass 1 --integrator stock --dt 0.0007 0.001 0.002 0.003 0.005
     $R --fluid HS --mass 1 --integrator diag --dt 0.002 0.005 0.01 0.02
-    $R --fluid HS --mass 1 --integrator imp --dt 0.005 0.01 0.02 0.03 0.04 ;;
+    $R --fluid HS --mass 1 --integrator imp --dt 0.003 0.005 0.01 0.02 0.03 0.04 ;;
   HS:0.1)
     $R --fluid HS --mass 0.1 --integrator stock --dt 0.00005 --role ref --windows 16
     $R --fluid HS --mass 0.1 --integrator stock --dt 0.0001 0.0002 0.0003 0.0005
@@ -30,22 +30,27 @@ for m in $masses; do
     $R --fluid "$fluid" --mass 1 --integrator stock --dt 0.001 --role ref --windows 16
     $R --fluid "$fluid" --mass 1 --integrator stock --dt 0.005 0.01 0.02 0.03 0.04
     $R --fluid "$fluid" --mass 1 --integrator diag --dt 0.01 0.02 0.03 0.04
-    $R --fluid "$fluid" --mass 1 --integrator imp --dt 0.01 0.02 0.03 0.04 ;;
+    $R --fluid "$fluid" --mass 1 --integrator imp --dt 0.01 0.02 0.03 0.04 0.06 0.08 ;;
   *:0.1)
     $R --fluid "$fluid" --mass 0.1 --integrator stock --dt 0.0003 --role ref --windows 16
     $R --fluid "$fluid" --mass 0.1 --integrator stock --dt 0.002 0.003 0.005 0.007 0.01
     $R --fluid "$fluid" --mass 0.1 --integrator diag --dt 0.003 0.005 0.007 0.01
-    $R --fluid "$fluid" --mass 0.1 --integrator imp --dt 0.005 0.007 0.01 0.015 0.02 ;;
+    $R --fluid "$fluid" --mass 0.1 --integrator imp --dt 0.005 0.007 0.01 0.015 0.02 0.03 0.04 ;;
   *:0.01)
     $R --fluid "$fluid" --mass 0.01 --integrator stock --dt 0.0001 --role ref --windows 16
-    $R --fluid "$fluid" --mass 0.01 --integrator stock --dt 0.0003 0.0005 0.0007 0.001
-    $R --fluid "$fluid" --mass 0.01 --integrator diag --dt 0.0005 0.001 0.002 0.003
-    $R --fluid "$fluid" --mass 0.01 --integrator imp --dt 0.002 0.003 0.004 0.005 0.007
+    $R --fluid "$fluid" --mass 0.01 --integrator stock --dt 0.00015 0.0002 0.0003 0.0005 0.0007 0.001
+    $R --fluid "$fluid" --mass 0.01 --integrator diag --dt 0.0002 0.0003 0.0005 0.001 0.002 0.003
+    $R --fluid "$fluid" --mass 0.01 --integrator imp --dt 0.002 0.003 0.004 0.005 0.007 0.01
     $R --fluid "$fluid" --mass 0.01 --integrator impv --dt 0.003 0.004 0.005 0.007 ;;
   *:0.001)
-    $R --fluid "$fluid" --mass 0.001 --integrator stock --dt 0.00003 --role ref --windows 16
-    $R --fluid "$fluid" --mass 0.001 --integrator stock --dt 0.0001 0.00015 0.0002 0.0003
-    $R --fluid "$fluid" --mass 0.001 --integrator diag --dt 0.0001 0.0002 0.0003 0.0005
+    # P: Gamma dt / m = 0.17 at 0.000015 (0.34 at 0.00003 left the pressure 0.5 % high)
+    if [ "$fluid" = P ]; then
+      $R --fluid P --mass 0.001 --integrator stock --dt 0.000015 --role ref --windows 8
+    else
+      $R --fluid "$fluid" --mass 0.001 --integrator stock --dt 0.00003 --role ref --windows 16
+    fi
+    $R --fluid "$fluid" --mass 0.001 --integrator stock --dt 0.00005 0.00007 0.0001 0.00015 0.0002 0.0003
+    $R --fluid "$fluid" --mass 0.001 --integrator diag --dt 0.00005 0.00007 0.0001 0.0002 0.0003 0.0005
     $R --fluid "$fluid" --mass 0.001 --integrator imp --dt 0.0005 0.0007 0.001 0.0015 0.002
     $R --fluid "$fluid" --mass 0.001 --integrator impv --dt 0.0007 0.001 0.0015 0.002 ;;
   esac

@@ -30,7 +30,7 @@ import time as clock
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
-from etddpd.lammps_output import loop_times, read_ave_time, read_ave_time_vector  # noqa: E402
+from etddpd.lammps_output import loop_times, read_ave_time, read_ave_time_vector, timing_breakdowns  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(HERE, "results")
@@ -201,6 +201,9 @@ def cmd_time(args):
                       "ranks": args.ranks, "round": round_, "sitting": args.sitting, "steps": nsteps, "loop": loop,
                       "s_per_tu": loop / (nsteps * dt) if nsteps else None, "load1": load, "exit": rc,
                       "date": clock.strftime("%Y-%m-%d %H:%M")}
+            breakdowns = timing_breakdowns(text)
+            if breakdowns:
+                record["breakdown"] = breakdowns[-1]
             append("timing.jsonl", record)
             print(f"time {args.fluid} m={args.mass} {name} dt={dt} round {round_}: loop {loop:.2f} s / {nsteps} "
                   f"steps = {record['s_per_tu']:.2f} s per time unit (load {load:.2f})", flush=True)

@@ -7,10 +7,11 @@ set -u
 cd "$(dirname "$0")"
 V="/usr/bin/python3 run.py viscosity"
 fluid=${1:?usage: viscosity.sh GW|P|HS MASS} mass=${2:?usage: viscosity.sh FLUID MASS}
-case "$mass" in
-0.01) cells="stock:0.0001 stock:0.0005 imp:0.005 impv:0.005" ;;
-0.001) cells="stock:0.00003 stock:0.0001 imp:0.001 impv:0.001" ;;
-*) echo "no cells for mass $mass" >&2; exit 2 ;;
+# reference, stock at its largest step, the implicit scheme (both settings) at theirs (scan)
+case "$fluid:$mass" in
+GW:0.01) cells="stock:0.0001 stock:0.0007 imp:0.007 impv:0.005" ;;
+P:0.01) cells="stock:0.0001 stock:0.0003 imp:0.005 impv:0.004" ;;
+*) echo "no cells for $fluid at mass $mass (README.md)" >&2; exit 2 ;;
 esac
 for seed in 0 1; do
   for cell in $cells; do

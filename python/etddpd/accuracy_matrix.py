@@ -159,6 +159,37 @@ def cost_per_time_unit(timings, ranks=1):
     return best
 
 
+def breakdown_table(timings, ranks=1):
+    """Per-step cost of each timed cell against a stock step of the same fluid and mass (the
+    fastest round of each), split as LAMMPS's timing breakdown: milliseconds per step in pair
+    forces, neighbor lists, communication, fixes (the integrator; for the implicit scheme its
+    whole friction step) and the rest."""
+    fastest = {}
+    for r in timings:
+        if r.get("exit") != 0 or not r.get("steps") or r.get("ranks", 1) != ranks or "breakdown" not in r:
+            continue
+        key = (r["fluid"], r["mass"], r["integrator"], r["dt"])
+        if key not in fastest or r["loop"] < fastest[key]["loop"]:
+            fastest[key] = r
+    lines = ["| fluid | m | integrator | dt | ms per step | pair | neigh | comm | modify (integrator) | other | step / stock step |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    stock_step = {}
+    for (fluid, mass, name, dt), r in fastest.items():
+        if name == "stock":
+            per_step = r["loop"] / r["steps"]
+            stock_step[(fluid, mass)] = min(stock_step.get((fluid, mass), np.inf), per_step)
+    order = list(INTEGRATOR_NAMES)
+    for (fluid, mass, name, dt), r in sorted(fastest.items(), key=lambda kv: (kv[0][0], -kv[0][1], order.index(kv[0][2]), kv[0][3])):
+        b = r["breakdown"]
+        ms = {k: 1000.0 * b.get(k, 0.0) / r["steps"] for k in ("Pair", "Neigh", "Comm", "Modify", "Other")}
+        total = 1000.0 * r["loop"] / r["steps"]
+        ref = stock_step.get((fluid, mass))
+        ratio = "-" if ref is None else f"{total / (1000.0 * ref):.2f}"
+        lines.append(f"| {fluid} | {mass:g} | {name} | {dt:g} | {total:.3f} | {ms['Pair']:.3f} | {ms['Neigh']:.3f} | "
+                     f"{ms['Comm']:.3f} | {ms['Modify']:.3f} | {ms['Other']:.3f} | {ratio} |")
+    return "\n".join(lines)
+
+
 def group(cell_list):
     """{(fluid, mass): {integrator: [cells]}}"""
     out = {}
@@ -347,6 +378,8 @@ def main(argv=None):
         print(summary_table(summary_rows(cell_list, costs, "kBT")))
         print(f"\n## The same with the friction-step kBT as the implicit scheme's temperature, {ranks} rank(s)\n")
         print(summary_table(summary_rows(cell_list, costs, "kBT_friction")))
+        print(f"\n## Cost of a step against a stock step, {ranks} rank(s)\n")
+        print(breakdown_table(timings, ranks))
         print()
     print("\n## Every cell\n")
     print(cell_table(cell_list))

@@ -208,6 +208,25 @@ def loop_times(text):
     return [LoopTime(float(s), int(p), int(n), int(a)) for s, p, n, a in _LOOP.findall(text)]
 
 
+_SECTION = re.compile(r'^(Pair|Bond|Kspace|Neigh|Comm|Output|Modify|Other)\s*\|(.*)$', re.M)
+
+
+def timing_breakdowns(text):
+    """LAMMPS's 'MPI task timing breakdown' of each run of a log, in order: {section: average
+    seconds over the ranks} (Pair, Neigh, Comm, Output, Modify, Other, ...)."""
+    out = []
+    for block in text.split('MPI task timing breakdown:')[1:]:
+        sections = {}
+        for name, rest in _SECTION.findall(block.split('\n\n')[0] if '\n\n' in block else block):
+            fields = [f.strip() for f in rest.split('|')]
+            try:
+                sections[name] = float(fields[1] if name != 'Other' else fields[1] or fields[0])
+            except (ValueError, IndexError):
+                continue
+        out.append(sections)
+    return out
+
+
 def read_dump(path):
     """The frames of a dump file (custom or atom style): Blocks with the names of its
     'ITEM: ATOMS' line, the time steps and data[frame, atom, column]."""

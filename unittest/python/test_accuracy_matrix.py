@@ -79,6 +79,19 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertIsNone(rows[0]["dt"])
         self.assertEqual(rows[0]["limited_by"], ["kBT"])
 
+    def test_breakdown_per_step_against_stock(self):
+        base = {"fluid": "GW", "mass": 0.01, "exit": 0, "ranks": 1, "steps": 400}
+        timings = [
+            dict(base, integrator="stock", dt=0.0005, loop=0.4,
+                 breakdown={"Pair": 0.2, "Neigh": 0.16, "Comm": 0.02, "Modify": 0.01, "Other": 0.01}),
+            dict(base, integrator="imp", dt=0.005, loop=1.2,
+                 breakdown={"Pair": 0.1, "Neigh": 0.5, "Comm": 0.02, "Modify": 0.57, "Other": 0.01}),
+            dict(base, integrator="imp", dt=0.005, loop=1.6, breakdown={"Pair": 1.0}),    # slower round
+        ]
+        table = am.breakdown_table(timings)
+        self.assertIn("| GW | 0.01 | stock | 0.0005 | 1.000 | 0.500 | 0.400 | 0.050 | 0.025 | 0.025 | 1.00 |", table)
+        self.assertIn("| GW | 0.01 | imp | 0.005 | 3.000 | 0.250 | 1.250 | 0.050 | 1.425 | 0.025 | 3.00 |", table)
+
     def test_speedup_from_fastest_round(self):
         timings = [
             {"fluid": "GW", "mass": 0.01, "integrator": "stock", "dt": 0.0005, "exit": 0, "s_per_tu": 10.0},

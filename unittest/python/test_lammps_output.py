@@ -230,6 +230,29 @@ class Log(Files):
         self.assertEqual(loops[-1].steps * loops[-1].atoms / loops[-1].seconds, 800000.0)
 
 
+    def test_timing_breakdowns(self):
+        text = """Loop time of 5.27 on 2 procs for 1000 steps with 3000 atoms
+
+MPI task timing breakdown:
+Section |  min time  |  avg time  |  max time  |%varavg| %total
+---------------------------------------------------------------
+Pair    | 0.44       | 0.45       | 0.46       |   0.0 |  8.48
+Neigh   | 2.1        | 2.2        | 2.3        |   0.0 | 41.16
+Comm    | 0.12       | 0.13       | 0.14       |   0.0 |  2.43
+Output  | 0.0001     | 0.0001     | 0.0001     |   0.0 |  0.00
+Modify  | 2.5        | 2.6        | 2.7        |   0.0 | 47.52
+Other   |            | 0.022      |            |       |  0.42
+
+Nlocal:        1500.0 ave        1500 max        1500 min
+"""
+        sections = lo.timing_breakdowns("no breakdown\n" + text + text.replace("0.45 ", "0.5  "))
+        self.assertEqual(len(sections), 2)
+        self.assertEqual(sections[0], {"Pair": 0.45, "Neigh": 2.2, "Comm": 0.13, "Output": 0.0001,
+                                       "Modify": 2.6, "Other": 0.022})
+        self.assertEqual(sections[1]["Pair"], 0.5)
+        self.assertEqual(lo.timing_breakdowns(LOG), [])
+
+
 class Dump(Files):
     def test_frames(self):
         frames = lo.read_dump(self.write("track", DUMP))
