@@ -34,6 +34,10 @@ class Deviation:
     def within(self, tolerance):
         return abs(self.value if self.resolved is None else self.resolved) <= tolerance
 
+    def beyond(self, tolerance):
+        """Outside the tolerance by more than two standard errors."""
+        return abs(self.value if self.resolved is None else self.resolved) - 2.0 * self.error > tolerance
+
 
 @dataclass
 class Cell:
@@ -46,6 +50,10 @@ class Cell:
 
     def passes(self, observables):
         return all(self.deviations[name].within(TOLERANCE[name])
+                   for name in observables if name in self.deviations)
+
+    def clearly_fails(self, observables):
+        return any(self.deviations[name].beyond(TOLERANCE[name])
                    for name in observables if name in self.deviations)
 
 
@@ -111,11 +119,15 @@ def references(records):
 
 def cells(records):
     """Every completed scan cell compared with its reference (the last record of each
-    (fluid, mass, integrator, dt) counts)."""
+    (fluid, mass, integrator, dt) counts). An earlier reference run at a larger step than the
+    one in use is a cell like the others."""
     refs = references(records)
     latest = {}
     for record in records:
-        if record.get("role") != "cell" or record.get("exit") != 0 or "error" in record:
+        if record.get("exit") != 0 or "error" in record:
+            continue
+        if record.get("role") != "cell" and (record.get("role") != "ref"
+                                             or record is refs.get((record["fluid"], record["mass"]))):
             continue
         latest[(record["fluid"], record["mass"], record["integrator"], record["dt"])] = record
     out = []
@@ -127,13 +139,16 @@ def cells(records):
 
 
 def largest_step(scan, observables):
-    """The largest dt of a scan (cells of one fluid, mass, integrator) such that it and every
-    smaller dt of the scan keep the observables within tolerance; None if the smallest fails."""
+    """The largest dt of a scan (cells of one fluid, mass, integrator) that keeps the observables
+    within tolerance, with no smaller dt of the scan outside it by more than two standard errors
+    (a smaller step only just outside is taken for noise, one clearly outside ends the scan);
+    None if no step qualifies."""
     best = None
     for cell in sorted(scan, key=lambda c: c.dt):
-        if not cell.passes(observables):
+        if cell.passes(observables):
+            best = cell.dt
+        elif cell.clearly_fails(observables):
             break
-        best = cell.dt
     return best
 
 
@@ -152,7 +167,8 @@ def cost_per_time_unit(timings, ranks=1):
     of the alternated rounds (other load only slows a run down)."""
     best = {}
     for record in timings:
-        if record.get("exit") != 0 or not record.get("s_per_tu") or record.get("ranks", 1) != ranks:
+        if record.get("exit") != 0 or not record.get("s_per_tu") or record.get("ranks", 1) != ranks \
+                or record.get("skin", 0.3) != 0.3:
             continue
         key = (record["fluid"], record["mass"], record["integrator"], record["dt"])
         best[key] = min(best.get(key, np.inf), record["s_per_tu"])
@@ -166,7 +182,8 @@ def breakdown_table(timings, ranks=1):
     whole friction step) and the rest."""
     fastest = {}
     for r in timings:
-        if r.get("exit") != 0 or not r.get("steps") or r.get("ranks", 1) != ranks or "breakdown" not in r:
+        if r.get("exit") != 0 or not r.get("steps") or r.get("ranks", 1) != ranks or "breakdown" not in r \
+                or r.get("skin", 0.3) != 0.3:
             continue
         key = (r["fluid"], r["mass"], r["integrator"], r["dt"])
         if key not in fastest or r["loop"] < fastest[key]["loop"]:

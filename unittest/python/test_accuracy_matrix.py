@@ -73,6 +73,22 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertEqual(rows["imp"]["limited_by"], ["g(r)"])
         self.assertEqual(rows["stock"]["dt"], 0.0005)    # stock has one temperature
 
+    def test_a_step_just_outside_between_passing_ones_is_noise(self):
+        records = scan_records()[:1] + [
+            record("stock", 0.001, 1.002, 20.0, 1.0),
+            dict(record("stock", 0.002, 1.0108, 20.0, 1.0), T_blocks=[1.0058, 1.0158]),    # +1.08 +- 0.5 %
+            record("stock", 0.003, 1.004, 20.0, 1.0),
+            record("stock", 0.004, 1.03, 20.0, 1.0),    # clearly outside: ends the scan
+            record("stock", 0.005, 1.0, 20.0, 1.0)]
+        rows = am.summary_rows(am.cells(records))
+        self.assertEqual(rows[0]["dt"], 0.003)
+
+    def test_an_earlier_reference_at_a_larger_step_is_a_cell(self):
+        records = [record("stock", 0.0001, 1.004, 20.1, 1.0, role="ref")] + scan_records()
+        c = am.cells(records)
+        self.assertIn(0.0001, [x.dt for x in c if x.integrator == "stock"])
+        self.assertEqual(len(c), 7)
+
     def test_a_failing_smallest_step_gives_none(self):
         bad = scan_records()[:1] + [record("diag", 0.001, 1.05, 20.0, 1.0)]
         rows = am.summary_rows(am.cells(bad))
