@@ -21,9 +21,10 @@ for m in $masses; do
     $R --fluid HS --mass 1 --integrator imp --dt 0.003 0.005 0.01 0.02 0.03 0.04 ;;
   HS:0.1)
     $R --fluid HS --mass 0.1 --integrator stock --dt 0.00005 --role ref --windows 16
-    $R --fluid HS --mass 0.1 --integrator stock --dt 0.0001 0.0002 0.0003 0.0005
-    # (the diagonal scheme and impv were not run at this mass: README.md)
-    $R --fluid HS --mass 0.1 --integrator imp --dt 0.001 0.002 0.004 0.007 0.01 0.015 0.02 ;;
+    $R --fluid HS --mass 0.1 --integrator stock --dt 0.0001 0.0002 0.0003 0.0005 0.0007 0.001
+    $R --fluid HS --mass 0.1 --integrator diag --dt 0.0002 0.0005 0.001 0.002
+    $R --fluid HS --mass 0.1 --integrator imp --dt 0.001 0.002 0.004 0.007 0.01 0.015 0.02
+    $R --fluid HS --mass 0.1 --integrator impv --dt 0.004 0.01 0.02 ;;
   HS:*) echo "HS: mass $m not in the matrix (its reference is out of reach, README.md)" ;;
   *:1)
     $R --fluid "$fluid" --mass 1 --integrator stock --dt 0.001 --role ref --windows 16
