@@ -15,5 +15,5 @@ start=$(date +%s.%N)
 mpirun "${mpi_flags[@]}" -np "$ranks" "$prefix/bin/lmp" -in "$here/examples/quickstart/in.quickstart" \
   -var plugin "$here/build/etddpdplugin.so" -log "$out/log.lammps" -screen none
 end=$(date +%s.%N)
-python3 "$here/python/summarise_log.py" "$out/log.lammps" --target-temperature 1.0 \
+/usr/bin/python3 "$here/python/summarise_log.py" "$out/log.lammps" --target-temperature 1.0 \
   --wall "$(python3 -c "print($end - $start)")" --outputs "$out"
