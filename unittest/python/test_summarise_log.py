@@ -45,6 +45,15 @@ class SummariseLog(unittest.TestCase):
         self.assertIn("friction-step velocities (f_integrate[5]): 1.0010", text)
         self.assertIn("deviation +0.10 %", text)
 
+    def test_the_main_jobs_committed_log(self):
+        log = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples",
+                           "quickstart", "log.quickstart.g++.1")
+        with open(log) as f:
+            text = summary(f.read())
+        self.assertIn("end-of-step velocities (thermo temp): 0.99", text)
+        self.assertIn("friction-step velocities (f_integrate[5]): 1.00", text)
+        self.assertIn("steps 1000", text)
+
 
 if __name__ == "__main__":
     unittest.main()
