@@ -113,6 +113,31 @@ def read_ave_time(path):
     return Table(path, _checked_names(names, data.shape[1]), data)
 
 
+def _take_rows(lines, count, path, what):
+    """The next count rows of numbers from the iterator lines; None where the file ends first
+    (a block or frame still being written)."""
+    rows = []
+    for row in lines:
+        rows.append(_numbers(path, what, row))
+        if len(rows) == count:
+            break
+    return None if len(rows) < count else rows
+
+
+def _stacked(blocks, path, what, mismatch):
+    """data[block, row, column] of blocks of rows; an error naming the mismatch where they differ
+    in shape."""
+    if not blocks:
+        raise LammpsOutputError(f'{path} is not a {what} file with data')
+    try:
+        data = np.array(blocks, dtype=float)
+    except ValueError:
+        data = None
+    if data is None or data.ndim != 3:
+        raise LammpsOutputError(f'{path}: {mismatch} ({what})')
+    return data
+
+
 def _read_blocks(path, what):
     """Blocks of a file of '<step> <rows> ...' lines each followed by that many rows; the
     header's last comment line names the columns (LAMMPS writes it last)."""
@@ -130,23 +155,12 @@ def _read_blocks(path, what):
             except (ValueError, IndexError):
                 raise LammpsOutputError(f'{path} is not a {what} file: expected '
                                         f'"step rows ...", got {line.strip()!r}') from None
-            rows = []
-            for row in lines:
-                rows.append(_numbers(path, what, row))
-                if len(rows) == nrows:
-                    break
-            if len(rows) < nrows:
-                break    # a block still being written
+            rows = _take_rows(lines, nrows, path, what)
+            if rows is None:
+                break
             steps.append(step)
             blocks.append(rows)
-    if not blocks:
-        raise LammpsOutputError(f'{path} is not a {what} file with data')
-    try:
-        data = np.array(blocks, dtype=float)
-    except ValueError:
-        data = None
-    if data is None or data.ndim != 3:
-        raise LammpsOutputError(f'{path}: blocks or rows of different lengths ({what})')
+    data = _stacked(blocks, path, what, 'blocks or rows of different lengths')
     names = header[-1] if header else None
     return Blocks(path, _checked_names(names, data.shape[2]),
                   np.array(steps), data)
@@ -217,10 +231,11 @@ def timing_breakdowns(text):
     out = []
     for block in text.split('MPI task timing breakdown:')[1:]:
         sections = {}
-        for name, rest in _SECTION.findall(block.split('\n\n')[0] if '\n\n' in block else block):
-            fields = [f.strip() for f in rest.split('|')]
+        # the table ends at the first blank line; its second column is the average over ranks
+        # (the only one filled for Other)
+        for name, rest in _SECTION.findall(block.split('\n\n')[0]):
             try:
-                sections[name] = float(fields[1] if name != 'Other' else fields[1] or fields[0])
+                sections[name] = float(rest.split('|')[1])
             except (ValueError, IndexError):
                 continue
         out.append(sections)
@@ -241,21 +256,10 @@ def read_dump(path):
                 natoms = int(next(lines))
             elif line.startswith('ITEM: ATOMS'):
                 names = line.split()[2:]
-                rows = []
-                for row in lines:
-                    rows.append(_numbers(path, what, row))
-                    if len(rows) == natoms:
-                        break
-                if len(rows) < natoms:
-                    break    # a frame still being written
+                rows = _take_rows(lines, natoms, path, what)
+                if rows is None:
+                    break
                 frames.append(rows)
-    if not frames:
-        raise LammpsOutputError(f'{path} is not a {what} file with data')
-    try:
-        data = np.array(frames, dtype=float)
-    except ValueError:
-        data = None
-    if data is None or data.ndim != 3:
-        raise LammpsOutputError(f'{path}: frames of different sizes ({what})')
+    data = _stacked(frames, path, what, 'frames of different sizes')
     return Blocks(path, _checked_names(names, data.shape[2]),
                   np.array(steps[:len(frames)]), data)
