@@ -5,6 +5,10 @@
 # (each fluid's lines are independent: run two fluids side by side on two cores).
 set -u
 cd "$(dirname "$0")"
+# LAMMPS (LMP) and the plugin (PLUGIN: the campaign's own copy unless set) for run.py
+PLUGIN=${PLUGIN:-/tmp/accuracy/etddpdplugin.so}
+. ../../tools/lammps_env.sh
+export LMP PLUGIN
 R="/usr/bin/python3 run.py scan"
 fluid=${1:?usage: campaign.sh GW|P|HS [MASS ...]}
 shift

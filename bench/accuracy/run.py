@@ -30,11 +30,16 @@ import time as clock
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
-from etddpd.lammps_output import loop_times, read_ave_time, read_ave_time_vector, timing_breakdowns  # noqa: E402
+from etddpd.accuracy_matrix import FLUIDS  # noqa: E402
+from etddpd.lammps_output import loop_times, read_ave_chunk, read_ave_time, read_ave_time_vector, timing_breakdowns  # noqa: E402
+from etddpd.statistics import standard_error  # noqa: E402
+from etddpd.viscosity_fit import fit_viscosity  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(HERE, "results")
-LMP = os.environ.get("LMP", os.path.expanduser("~/.cache/etd-dpd/lammps-29Sep2021-7ef1f1e9ad/bin/lmp"))
+# LMP and PLUGIN as the drivers (campaign.sh, timing.sh, viscosity.sh) set them through
+# tools/lammps_env.sh; run by hand, LMP must be set (tools/bootstrap.sh prints LAMMPS_PREFIX)
+LMP = os.environ.get("LMP")
 PLUGIN = os.environ.get("PLUGIN", "/tmp/accuracy/etddpdplugin.so")
 WORK = os.environ.get("WORK", "/tmp/accuracy/runs")
 
@@ -48,6 +53,9 @@ INTEGRATORS = {
 
 
 def lammps(inp, variables, workdir, log="log.lammps", ranks=1):
+    if not LMP:
+        sys.exit("run.py: set LMP to the LAMMPS executable ($LAMMPS_PREFIX/bin/lmp from tools/bootstrap.sh), "
+                 "or run it through campaign.sh, timing.sh or viscosity.sh")
     os.makedirs(workdir, exist_ok=True)
     if variables.get("data", "no") != "no":
         shutil.copy(variables["data"], os.path.join(workdir, "start.data"))
@@ -56,7 +64,7 @@ def lammps(inp, variables, workdir, log="log.lammps", ranks=1):
     if ranks > 1:
         mpi = ["mpirun", "-np", str(ranks)] + (["--allow-run-as-root"] if os.geteuid() == 0 else [])
     cmd = ["nice", "-n", "5"] + mpi + [LMP, "-in", os.path.join(HERE, inp), "-screen", "none", "-log", log]
-    for key, value in variables.items():
+    for key, value in dict(variables, bench=HERE).items():
         cmd += ["-var", key, str(value)]
     start = clock.time()
     done = subprocess.run(cmd, cwd=workdir)
@@ -171,13 +179,12 @@ def cmd_scan(args):
         T = np.array(record.get("T_blocks", [np.nan]))
         P = np.array(record.get("P_blocks", [np.nan]))
         D = np.array(record.get("D_blocks", [np.nan]))
-        err = lambda x: np.std(x, ddof=1) / np.sqrt(len(x)) if len(x) > 1 else np.nan  # noqa: E731
         extra = ""
         if "T5_blocks" in record:
             extra = f" T5={np.mean(record['T5_blocks']):.4f}"
         print(f"{args.fluid} m={args.mass} {args.integrator} dt={dt} [{args.role}] exit={rc} wall={wall:.0f}s "
-              f"T={T.mean():.4f}+-{err(T):.4f}{extra} P={P.mean():.3f}+-{err(P):.3f} "
-              f"D={D.mean():.4f}+-{err(D):.4f} it={record.get('cg_iterations', '-')}", flush=True)
+              f"T={T.mean():.4f}+-{standard_error(T):.4f}{extra} P={P.mean():.3f}+-{standard_error(P):.3f} "
+              f"D={D.mean():.4f}+-{standard_error(D):.4f} it={record.get('cg_iterations', '-')}", flush=True)
 
 
 def cmd_time(args):
@@ -242,13 +249,11 @@ def cmd_viscosity(args):
                  "dt": args.dt, "data": f"/tmp/accuracy/{args.fluid}.data", "equil": args.equil,
                  "time": args.time, "g": args.force, "seed": args.seed, "blocks": args.blocks}
     rc, text, wall = lammps("in.viscosity", variables, work)
-    from etddpd.lammps_output import read_ave_chunk  # noqa: E402
-    from etddpd.viscosity_fit import fit_viscosity  # noqa: E402
     record = {"fluid": args.fluid, "mass": args.mass, "integrator": args.integrator, "fix": integrator,
               "dt": args.dt, "time": args.time, "equil": args.equil, "force": args.force, "seed": args.seed,
               "exit": rc, "wall": round(wall, 2), "date": clock.strftime("%Y-%m-%d %H:%M")}
     try:
-        density = 3.0 if args.fluid == "GW" else 4.0
+        density = FLUIDS[args.fluid]["n"]
         profiles = read_ave_chunk(os.path.join(work, "profile.txt")).data
         etas = []
         for block in profiles:
@@ -265,7 +270,7 @@ def cmd_viscosity(args):
     if "eta" in record:
         e = np.array(record["eta_blocks"])
         print(f"visc {args.fluid} m={args.mass} {args.integrator} dt={args.dt}: eta={record['eta']:.4f} "
-              f"(fit +-{record['eta_fit_error']:.4f}, blocks {e.mean():.4f}+-{e.std(ddof=1) / np.sqrt(len(e)):.4f}) "
+              f"(fit +-{record['eta_fit_error']:.4f}, blocks {e.mean():.4f}+-{standard_error(e):.4f}) "
               f"kBT={record['kBT']} wall={wall:.0f}s", flush=True)
 
 

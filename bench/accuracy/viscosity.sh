@@ -5,6 +5,10 @@
 # equilibrium observables allow (scan). Usage: bash bench/accuracy/viscosity.sh FLUID MASS
 set -u
 cd "$(dirname "$0")"
+# LAMMPS (LMP) and the plugin (PLUGIN: the campaign's own copy unless set) for run.py
+PLUGIN=${PLUGIN:-/tmp/accuracy/etddpdplugin.so}
+. ../../tools/lammps_env.sh
+export LMP PLUGIN
 V="/usr/bin/python3 run.py viscosity"
 fluid=${1:?usage: viscosity.sh GW|P|HS MASS} mass=${2:?usage: viscosity.sh FLUID MASS}
 # reference, stock at its largest step, the implicit scheme (both settings) at theirs (scan)
