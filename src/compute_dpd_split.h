@@ -1,4 +1,5 @@
-// ETD-DPD: compute dpd/split, the conservative / dissipative / random parts of the pair force.
+// ETD-DPD: compute dpd/split, the conservative / dissipative / random parts of the pair force
+// (and of the torque, dpd/fpm).
 #ifndef ETD_COMPUTE_DPD_SPLIT_H
 #define ETD_COMPUTE_DPD_SPLIT_H
 
@@ -24,6 +25,7 @@ class ComputeDPDSplit : public Compute {
   etd::DpdPairInterface *dpd_style;
   etd::DpdFrictionIntegrator *implicit;    // fix etd scheme implicit: it supplies D and R
   const char *implicit_id;
+  int nvalues;    // 9 (force) or 15 (force and torque)
   int nmax;
   double **per_atom;
   void copy_split();

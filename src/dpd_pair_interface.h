@@ -16,14 +16,18 @@ struct FpmCoefficients;
 // Per-atom extras a pair style accumulates during compute() on request (owned atoms complete,
 // ghost contributions already reverse-communicated):
 //   diagonal friction Gamma_i,alpha = sum_j gamma_ij w_D e_alpha^2      (fix etd)
-//   conservative, dissipative and random parts of the pair force       (compute dpd/split)
+//   conservative, dissipative and random parts of the pair force,
+//   and of the torque where the style has rotation                      (compute dpd/split)
 class DpdPairInterface {
  public:
   // Each user sets its flag once in init(); the pair style then fills the arrays every compute().
   virtual void request_diagonal_friction() = 0;
   virtual void request_force_split() = 0;
   virtual double **diagonal_friction() = 0;    // [nlocal][3]
-  virtual double **force_split() = 0;          // [nlocal][9]: C xyz, D xyz, R xyz
+  virtual double **force_split() = 0;    // [nlocal][force_split_columns()]: C xyz, D xyz, R xyz
+  // 9, or 15 where the style has rotation: then also the torque's D xyz and R xyz (its
+  // conservative part is zero: central forces make no torque)
+  virtual int force_split_columns() const = 0;
   // Angular counterparts (dpd/fpm): nullptr where the style has no rotation.
   virtual double **rotational_friction() { return nullptr; }
 

@@ -16,13 +16,15 @@
 using namespace LAMMPS_NS;
 
 PairDPDBase::PairDPDBase(LAMMPS *lmp, const char *style, bool rotation_) :
-    Pair(lmp), style_name(style), rotation(rotation_), temperature(0.0), cut_global(0.0), seed(0),
-    cut(nullptr), want_friction(false), want_split(false), conservative_only(false),
-    friction(nullptr), rot_friction(nullptr), split(nullptr), nmax_extras(0)
+    Pair(lmp), style_name(style), rotation(rotation_),
+    split_values(rotation_ ? FORCE_SPLIT_VALUES + TORQUE_SPLIT_VALUES : FORCE_SPLIT_VALUES),
+    temperature(0.0), cut_global(0.0), seed(0), cut(nullptr), want_friction(false),
+    want_split(false), conservative_only(false), friction(nullptr), rot_friction(nullptr),
+    split(nullptr), nmax_extras(0)
 {
   writedata = 1;
   restartinfo = 1;
-  comm_reverse = (rotation ? 2 : 1) * FRICTION_VALUES + SPLIT_VALUES;
+  comm_reverse = (rotation ? 2 : 1) * FRICTION_VALUES + split_values;
 }
 
 PairDPDBase::~PairDPDBase()
@@ -123,14 +125,14 @@ bool PairDPDBase::prepare_extras()
       memory->grow(friction, nmax_extras, FRICTION_VALUES, "pair:friction");
       if (rotation) memory->grow(rot_friction, nmax_extras, FRICTION_VALUES, "pair:rot_friction");
     }
-    if (want_split) memory->grow(split, nmax_extras, SPLIT_VALUES, "pair:split");
+    if (want_split) memory->grow(split, nmax_extras, split_values, "pair:split");
   }
   const int nzero = force->newton_pair ? atom->nlocal + atom->nghost : atom->nlocal;
   if (want_friction && nzero > 0) {
     std::memset(&friction[0][0], 0, sizeof(double) * FRICTION_VALUES * nzero);
     if (rotation) std::memset(&rot_friction[0][0], 0, sizeof(double) * FRICTION_VALUES * nzero);
   }
-  if (want_split && nzero > 0) std::memset(&split[0][0], 0, sizeof(double) * SPLIT_VALUES * nzero);
+  if (want_split && nzero > 0) std::memset(&split[0][0], 0, sizeof(double) * split_values * nzero);
   return true;
 }
 
@@ -150,7 +152,7 @@ int PairDPDBase::pack_reverse_comm(int n, int first, double *buf)
         for (int k = 0; k < FRICTION_VALUES; k++) buf[m++] = rot_friction[i][k];
     }
     if (want_split)
-      for (int k = 0; k < SPLIT_VALUES; k++) buf[m++] = split[i][k];
+      for (int k = 0; k < split_values; k++) buf[m++] = split[i][k];
   }
   return m;
 }
@@ -166,7 +168,7 @@ void PairDPDBase::unpack_reverse_comm(int n, int *list, double *buf)
         for (int k = 0; k < FRICTION_VALUES; k++) rot_friction[j][k] += buf[m++];
     }
     if (want_split)
-      for (int k = 0; k < SPLIT_VALUES; k++) split[j][k] += buf[m++];
+      for (int k = 0; k < split_values; k++) split[j][k] += buf[m++];
   }
 }
 
@@ -226,7 +228,7 @@ double PairDPDBase::memory_usage()
   double bytes = Pair::memory_usage();
   bytes += static_cast<double>(nmax_extras) *
       ((friction ? FRICTION_VALUES : 0) + (rot_friction ? FRICTION_VALUES : 0) +
-       (split ? SPLIT_VALUES : 0)) *
+       (split ? split_values : 0)) *
       sizeof(double);
   return bytes;
 }

@@ -33,6 +33,7 @@ class PairDPDBase : public Pair, public etd::DpdPairInterface {
   void request_force_split() override { want_split = true; }
   double **diagonal_friction() override { return friction; }
   double **force_split() override { return split; }
+  int force_split_columns() const override { return split_values; }
   double **rotational_friction() override { return rot_friction; }
   std::uint64_t noise_seed() const override { return static_cast<std::uint64_t>(seed); }
   void request_conservative_only() override { conservative_only = true; }
@@ -44,10 +45,12 @@ class PairDPDBase : public Pair, public etd::DpdPairInterface {
 
   static constexpr double MIN_DISTANCE = 1.0e-10;    // coincident atoms (possible in DPD): no force
   static constexpr int FRICTION_VALUES = 3;
-  static constexpr int SPLIT_VALUES = 9;
+  static constexpr int FORCE_SPLIT_VALUES = 9;     // C, D, R of the force
+  static constexpr int TORQUE_SPLIT_VALUES = 6;    // D, R of the torque (with rotation)
 
   const char *const style_name;
   const bool rotation;
+  const int split_values;    // columns of split
 
   double temperature, cut_global;
   int seed;
@@ -58,7 +61,7 @@ class PairDPDBase : public Pair, public etd::DpdPairInterface {
   bool conservative_only;    // friction and noise (and torques) left to fix etd's implicit scheme
   double **friction;         // [nmax][3] translational diagonal
   double **rot_friction;     // [nmax][3] rotational diagonal (with rotation only)
-  double **split;            // [nmax][9]
+  double **split;            // [nmax][split_values]
   int nmax_extras;
 
   // the style's per type pair arrays: allocate_base() and its own

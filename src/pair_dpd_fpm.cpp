@@ -280,6 +280,15 @@ template <int EVFLAG, int EXTRAS, int DISSIPATIVE> void PairDPDFPM::eval()
               split[i][3 * p + k] += parts[p][k];
               if (update_j) split[j][3 * p + k] -= parts[p][k];
             }
+          // the torque's dissipative and random parts, the same on i and j
+          double torque_parts[2][3];
+          etd::fpm_pair_torque(del, pr.dissipative, torque_parts[0]);
+          etd::fpm_pair_torque(del, pr.random, torque_parts[1]);
+          for (int p = 0; p < 2; p++)
+            for (int k = 0; k < 3; k++) {
+              split[i][FORCE_SPLIT_VALUES + 3 * p + k] += torque_parts[p][k];
+              if (update_j) split[j][FORCE_SPLIT_VALUES + 3 * p + k] += torque_parts[p][k];
+            }
         }
       }
 

@@ -290,3 +290,24 @@ TEST(FpmKernel, ZeroShearDissipationIsTheDpdGenOne)
       }
     }
 }
+
+TEST(FpmKernel, TorqueOfTheForcePartsAddsUpToThePairTorque)
+{
+  // compute dpd/split torque yes: -(r_ij/2) x F of the dissipative and of the random part add up
+  // to the pair's torque; the conservative part makes none
+  std::mt19937_64 gen(23);
+  etd::FpmCoefficients c;
+  c.set(25.0, 4.5, 6.0, 0.5, 1.2, 1.3);
+  for (int n = 0; n < 200; n++) {
+    const PairState p = random_state(gen, 1.2);
+    const auto pr = evaluate(c, p, 10.0);
+    double dissipative[3], random[3], conservative[3];
+    etd::fpm_pair_torque(p.del, pr.dissipative, dissipative);
+    etd::fpm_pair_torque(p.del, pr.random, random);
+    etd::fpm_pair_torque(p.del, pr.conservative, conservative);
+    for (int k = 0; k < 3; k++) {
+      EXPECT_NEAR(dissipative[k] + random[k], pr.torque[k], 1e-12 * (1 + std::fabs(pr.torque[k])));
+      EXPECT_NEAR(conservative[k], 0.0, 1e-12 * (1 + std::fabs(pr.conservative[k])));
+    }
+  }
+}

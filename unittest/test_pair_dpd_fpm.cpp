@@ -188,6 +188,47 @@ TEST(PairDpdFpm, ForceSplitAndFrictionAreConsistent)
   EXPECT_GT(dissipative, 0.1);
 }
 
+TEST(PairDpdFpm, TorqueSplitAddsUpToTheTorque)
+{
+  // compute dpd/split torque yes: the torque's dissipative and random parts (columns 10-15) add
+  // up to each atom's torque; at T = 0 the random part is zero and the dissipative part is the
+  // whole torque; with a spin and no noise the dissipative torque opposes the spin
+  // (-gamma_S w (r^2/4)(1 - e e) Omega summed over pairs: its z component is negative for a
+  // positive Omega_z). The first nine columns stay those of the force.
+  Lammps l;
+  setup_box(l);
+  l.cmds({"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 6.0 0.5",
+          "compute split all dpd/split torque yes", "compute force_only all dpd/split torque no",
+          "thermo_style custom step c_split[10] c_force_only[1]", "run 0 post no"});
+  auto split = l.gather_compute("split", 15);
+  auto force_only = l.gather_compute("force_only", 9);
+  auto f = l.gather("f");
+  auto tq = l.gather_compute("tq", 3);
+  const size_t natoms = f.size() / 3;
+  double random_torque = 0.0;
+  for (size_t a = 0; a < natoms; a++)
+    for (int k = 0; k < 3; k++) {
+      EXPECT_NEAR(split[15 * a + 9 + k] + split[15 * a + 12 + k], tq[3 * a + k],
+                  1e-11 * (1 + std::fabs(tq[3 * a + k])));
+      EXPECT_EQ(split[15 * a + 3 + k], force_only[9 * a + 3 + k]);
+      random_torque = std::max(random_torque, std::fabs(split[15 * a + 12 + k]));
+    }
+  EXPECT_GT(random_torque, 1.0);    // the noise makes torques: the check above is not empty
+
+  l.cmds({"pair_style dpd/fpm 0.0 1.0 5", "pair_coeff * * 25 4.5 6.0 0.5", "velocity all set 0 0 0",
+          "set group all omega 0 0 2.0", "run 0 post no"});
+  split = l.gather_compute("split", 15);
+  tq = l.gather_compute("tq", 3);
+  for (size_t a = 0; a < natoms; a++) {
+    for (int k = 0; k < 3; k++) {
+      EXPECT_EQ(split[15 * a + 12 + k], 0.0);
+      EXPECT_NEAR(split[15 * a + 9 + k], tq[3 * a + k], 1e-12 * (1 + std::fabs(tq[3 * a + k])));
+    }
+    // a lone atom (no partner inside the cutoff) has no torque at all
+    if (std::fabs(tq[3 * a + 2]) > 0.0) EXPECT_LT(split[15 * a + 11], 0.0);
+  }
+}
+
 TEST(PairDpdFpm, FixEtdUsesTheRotationalFrictionDiagonal)
 {
   // two atoms 0.6 apart along x, a = gamma_C = 0, T = 0; atom 1 spins about z, atom 2 does not.
@@ -372,6 +413,15 @@ TEST(PairDpdFpm, BadInputGivesClearErrors)
           {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5",
             "set atom 3 diameter 0.0", "fix 1 all etd", "run 1"},
            "atom 3 has zero moment of inertia"},
+          {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5",
+            "compute s all dpd/split torque maybe"},
+           "torque must be yes or no, got maybe"},
+          {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5",
+            "compute s all dpd/split torque"},
+           "keyword torque needs yes or no"},
+          {{"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5",
+            "compute s all dpd/split torque yes", "fix 1 all etd scheme implicit", "run 0"},
+           "torque yes is not supported with fix etd scheme implicit"},
       },
       [](Lammps &l) {
         setup_box(l);

@@ -329,6 +329,9 @@ TEST(PairDpdGen, BadInputGivesClearErrors)
            "compute dpd/split"},
           {{"pair_style zero 1.0", "pair_coeff * *", "compute s all dpd/split", "run 0"},
            "Compute dpd/split requires pair style dpd/gen"},
+          {{"pair_style dpd/gen 1.0 1.0 5", "pair_coeff * * 25 4.5 0.5",
+            "compute s all dpd/split torque yes", "run 0"},
+           "torque yes requires pair style dpd/fpm"},
       },
       [](Lammps &l) {
         setup_box(l);

@@ -161,6 +161,15 @@ inline FpmPairResult fpm_pair(const FpmCoefficients &c, const double del[3], dou
   return out;
 }
 
+// The torque -(r_ij/2) x F that a part F of the pair force puts on each of i and j (for the
+// dissipative and random parts of the split; their sum is FpmPairResult::torque up to rounding).
+inline void fpm_pair_torque(const double del[3], const double force[3], double out[3])
+{
+  const double half_del[3] = {0.5 * del[0], 0.5 * del[1], 0.5 * del[2]};
+  cross(half_del, force, out);
+  for (int k = 0; k < 3; k++) out[k] = -out[k];
+}
+
 // Conservative energy a rc / 2 (1 - r/rc)^2, zero at rc.
 inline double fpm_energy(const FpmCoefficients &c, double r, double special = 1.0)
 {

@@ -116,6 +116,15 @@ write_blocks(os.path.join(tmp, 'pair.drag'),
 r = fa.two_spheres(os.path.join(tmp, 'pair.drag'), L, g, nf, l)
 check('two-sphere drag ratio', r['ratio'], 1.0, 1e-9)
 check('two-sphere torque ratio', r['T'] / r['T_the'], 0.8, 1e-9)
+check('two-sphere file without the torque split', 'TD' in r, False, 0)
+# with the split columns: the dissipative torques (+-0.9 x eq. 23) are read from columns 10 and 11
+write_blocks(os.path.join(tmp, 'pair_split.drag'),
+             [u * (nf + 2) / nf * np.ones(n), nf * g / 2 * np.ones(n), np.zeros(n), np.zeros(n), np.zeros(n),
+              np.ones(n), 0.8 * tthe * np.ones(n), -0.8 * tthe * np.ones(n), 0.9 * tthe * np.ones(n),
+              -0.9 * tthe * np.ones(n)])
+r = fa.two_spheres(os.path.join(tmp, 'pair_split.drag'), L, g, nf, l)
+check('two-sphere dissipative torque ratio', r['TD'] / r['T_the'], 0.9, 1e-9)
+check('two-sphere total torque ratio with the split columns', r['T'] / r['T_the'], 0.8, 1e-9)
 check("eq. 23 torque at the paper's l = 1, u = 0.3349", 8 * math.pi * MU * R ** 3 * 0.3349 * tf, 0.106, 0.001)
 
 print('FAILED: ' + ', '.join(failures) if failures else 'all passed')
