@@ -27,6 +27,7 @@ C_D = 24/Re (1 + 0.150 Re^0.681) + 0.407 / (1 + 8710/Re).
   python/channel_sphere.py velocity velocity_profile.H2   # centre-line velocity, hydrodynamic radius
   python/channel_sphere.py tube 4.5 4.9         # wall factor: drag in a wider tube, same U
   python/channel_sphere.py drag --slit 6.3 drag.U0.9     # a_h: the wall factor taken out
+  python/channel_sphere.py shells profiles.U0.9_nx120_profiles   # slip, a_h from the flow field
 
 Defaults: rho = 4 (n = 4, m = 1), d = 3, eta = 1.083 (kinetic theory of standard DPD with
 a = 18.75, gamma = 4.5, kBT = 1, n = 4, rc = 1: 0.796 kinetic + 0.287 dissipative).
@@ -529,6 +530,72 @@ def tube_command(args):
         print(f'{r:8.4f}  {lam:6.4f}  {k_rest:12.4f}  {k_flow:16.4f}  {k_flow / first:16.4f}')
 
 
+def shell_fit(r, u, weight):
+    """Weighted least squares u = U_inf (1 - a_h / r), linear in (U_inf, U_inf a_h): the shell
+    mean of v_x about a no-slip sphere of radius a_h at rest in unbounded Stokes flow (the
+    angular mean of Stokes' solution; the a^3 term averages out). Returns (U_inf, a_h)."""
+    design = np.column_stack([np.ones_like(r), -1.0 / r])
+    w = np.sqrt(weight)
+    (u_inf, u_inf_a), *_ = np.linalg.lstsq(design * w[:, None], u * w, rcond=None)
+    return float(u_inf), float(u_inf_a / u_inf)
+
+
+def shell_profile(count, vx, rows):
+    """Count-weighted v_x and the mean count per shell over the given blocks."""
+    c = count[rows]
+    n = c.sum(axis=0)
+    return np.where(n > 0, (vx[rows] * c).sum(axis=0) / np.maximum(n, 1e-300), 0.0), n / len(c)
+
+
+def shells_command(args):
+    """Shell means about the sphere (in.sphere_shear's profiles files, bin/sphere chunks):
+    density and v_x per shell, the fluid inside the sphere and its mean v_x, and the fit of
+    v_x = U_inf (1 - a_h / r) over --fit-from <= r <= --fit-to (a_h: the hydrodynamic radius
+    of the sphere in Stokes flow; U_inf the velocity far from it), each with a batch error."""
+    if not 0.0 < args.fit_from < args.fit_to:
+        sys.exit('channel_sphere: shells needs 0 < --fit-from < --fit-to')
+    for path in args.files:
+        blocks = read_chunks(path)
+        start = int(round(args.discard * len(blocks.steps)))
+        if len(blocks.steps) - start < 2:
+            sys.exit(f'channel_sphere: {path} has fewer than 2 blocks after --discard')
+        count, vx = blocks.column('Ncount')[start:], blocks.column('vx')[start:]
+        radius = blocks.column('Coord1')[0]
+        width = radius[1] - radius[0]
+        volume = 4.0 / 3.0 * math.pi * ((radius + width / 2) ** 3 - (radius - width / 2) ** 3)
+        batches = np.array_split(np.arange(len(count)), min(args.batches, len(count)))
+        u, n = shell_profile(count, vx, slice(None))
+        fit = (radius >= args.fit_from) & (radius <= args.fit_to) & (n > 0)
+        if fit.sum() < 3:
+            sys.exit(f'channel_sphere: fewer than 3 shells of {path} in the fit range')
+        u_inf, a_h = shell_fit(radius[fit], u[fit], n[fit])
+        inside = radius + width / 2 <= args.radius + 1e-9
+        per_batch = []
+        for rows in batches:
+            ub, nb = shell_profile(count, vx, rows)
+            ok = fit & (nb > 0)
+            fb = shell_fit(radius[ok], ub[ok], nb[ok])
+            inside_n = nb[inside].sum()
+            per_batch.append((*fb, inside_n, (ub[inside] * nb[inside]).sum() / max(inside_n, 1e-300),
+                              *ub))
+        per_batch = np.array(per_batch)
+        err = standard_error(per_batch)
+        inside_n = n[inside].sum()
+        inside_u = (u[inside] * n[inside]).sum() / max(inside_n, 1e-300)
+        print(f'{path}: {len(count)} blocks, {len(batches)} batches')
+        print(f'  fit v_x = U_inf (1 - a_h / r) over {args.fit_from:g} <= r <= {args.fit_to:g}: '
+              f'U_inf = {u_inf:.4f} +- {err[0]:.4f}, a_h = {a_h:.3f} +- {err[1]:.3f}')
+        print(f'  fluid inside r < {args.radius:g}: {inside_n:.1f} +- {err[2]:.1f} particles, '
+              f'mean v_x {inside_u:.4f} +- {err[3]:.4f} ({inside_u / u_inf:.3f} of U_inf)')
+        print('  r      density   v_x       +-       v_x / U_inf   Stokes (1 - a_h/r)')
+        for k, r in enumerate(radius):
+            if n[k] <= 0:
+                continue
+            stokes = 1.0 - a_h / r if r > a_h else float('nan')
+            print(f'  {r:5.3f}  {n[k] / volume[k]:7.3f}  {u[k]:8.4f}  {err[4 + k]:7.4f}  '
+                  f'{u[k] / u_inf:8.3f}      {stokes:8.3f}')
+
+
 def add_drag_parser(sub, start_up):
     drag = sub.add_parser('drag', parents=[start_up], help='Re and C_D from drag files')
     drag.add_argument('files', nargs='*',
@@ -587,6 +654,14 @@ def add_profile_parsers(sub, start_up):
     density.add_argument('--rmin', type=float, default=0.0)
     density.add_argument('--rmax', type=float, default=1e30)
     density.add_argument('--png')
+    shells = sub.add_parser('shells', parents=[start_up],
+                            help='density and v_x in shells about the sphere, hydrodynamic radius')
+    shells.add_argument('files', nargs='+')
+    shells.add_argument('--fit-from', type=float, default=2.0)
+    shells.add_argument('--fit-to', type=float, default=4.5)
+    shells.add_argument('--radius', type=float, default=1.5,
+                        help='the sphere\'s nominal radius (the fluid inside it is counted)')
+    shells.add_argument('--batches', type=int, default=5)
 
 
 def parse_args(argv=None):
@@ -608,7 +683,7 @@ def parse_args(argv=None):
 
 
 COMMANDS = {'drag': drag_command, 'radius': radius_command, 'velocity': velocity_command,
-            'density': density_command, 'tube': tube_command}
+            'density': density_command, 'tube': tube_command, 'shells': shells_command}
 
 
 def main(argv=None):

@@ -10,6 +10,7 @@ import io
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -236,6 +237,45 @@ class VelocityProfile(InTempDir):
         v, rh = channel_sphere.parabola_fit(r, 0.8 * (1 - r**2 / 5.3**2), np.ones_like(r))
         self.assertAlmostEqual(v, 0.8, places=12)
         self.assertAlmostEqual(rh, 5.3, places=10)
+
+
+class ShellProfile(InTempDir):
+    def write_shells(self, path, blocks, u_inf, a, inside_u, density=4.0, noise=0.0):
+        """bin/sphere chunks of 0.25 out to 5: v_x = U_inf (1 - a/r) outside 1.5, inside_u within"""
+        rng = np.random.default_rng(7)
+        radii = 0.125 + 0.25 * np.arange(20)
+        with open(path, "w") as out:
+            out.write("# Chunk-averaged data for fix shell_profile and group fluid\n"
+                      "# Timestep Number-of-chunks Total-count\n"
+                      "# Chunk Coord1 Ncount density/number vx\n")
+            for b in range(blocks):
+                out.write(f"{(b + 1) * 1000} 20 1000\n")
+                for k, r in enumerate(radii):
+                    volume = 4 / 3 * math.pi * ((r + 0.125) ** 3 - (r - 0.125) ** 3)
+                    u = inside_u if r < 1.5 else u_inf * (1 - a / r)
+                    u += noise * rng.standard_normal()
+                    out.write(f"  {k + 1} {r} {density * volume} {density} {u}\n")
+
+    def test_fit_recovers_the_radius_and_the_flow_inside(self):
+        path = self.path("profiles.x")
+        self.write_shells(path, 10, 0.9, 1.1, 0.3)
+        text = printed(["shells", "--discard", "0", path])
+        self.assertIn("U_inf = 0.9000 +- 0.0000, a_h = 1.100 +- 0.000", text)
+        inside = 4.0 * 4 / 3 * math.pi * 1.5 ** 3
+        self.assertIn(f"{inside:.1f} +- 0.0 particles, mean v_x 0.3000 +- 0.0000 (0.333 of U_inf)", text)
+        # density per shell: the count over the shell's volume
+        rows = [line.split() for line in text.splitlines()[4:]]
+        self.assertTrue(all(abs(float(row[1]) - 4.0) < 1e-3 for row in rows))
+
+    def test_noise_gives_an_error_and_the_range_is_checked(self):
+        path = self.path("profiles.x")
+        self.write_shells(path, 20, 0.9, 1.1, 0.3, noise=0.02)
+        found = re.search(r"a_h = (\S+) \+- (\S+)", printed(["shells", "--discard", "0", path]))
+        a_h, err = float(found.group(1)), float(found.group(2))
+        self.assertGreater(err, 0.0)
+        self.assertLess(abs(a_h - 1.1), 5 * err)
+        with self.assertRaises(SystemExit):
+            channel_sphere.main(["shells", "--fit-from", "4", "--fit-to", "2", path])
 
 
 class TubeWallFactor(unittest.TestCase):
