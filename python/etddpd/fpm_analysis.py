@@ -73,6 +73,15 @@ def torque(path, skip_blocks=0):
     return float(tz.mean()), float(standard_error(tz)), len(tz)
 
 
+def dissipative_torque(path, skip_blocks=0):
+    """Mean and error of the z torque's dissipative part (column 4 of a rotating-sphere file
+    written with compute dpd/split torque yes), or None for files without it."""
+    d = read_blocks(path)[skip_blocks:]
+    if d.shape[1] < 5:
+        return None
+    return float(d[:, 4].mean()), float(standard_error(d[:, 4]))
+
+
 def batch_mean(x, nbatch=20):
     """Mean and standard error from nbatch consecutive batches (blocks may be correlated)."""
     x = np.asarray(x, dtype=float)
@@ -272,6 +281,11 @@ def torque_rows(a, mu, R, rows):
         rows.append((f'torque T / (-8 pi mu Omega R^3), {label}, Omega = {float(omega):g}, {nb} blocks',
                      '1 (within 1.3 %)', f'{t / stokes:.3f} +- {terr / abs(stokes):.3f}',
                      f'T = {t:.3f} +- {terr:.3f}, Stokes {stokes:.3f}'))
+        split = dissipative_torque(path)
+        if split is not None:
+            rows.append((f'  its dissipative part (compute dpd/split torque yes), {label}', '1',
+                         f'{split[0] / stokes:.3f} +- {split[1] / abs(stokes):.3f}',
+                         f'T_D = {split[0]:.3f} +- {split[1]:.3f}; random part {t - split[0]:.3f}'))
 
 
 def drag_rows(a, rows):

@@ -125,6 +125,15 @@ write_blocks(os.path.join(tmp, 'pair_split.drag'),
 r = fa.two_spheres(os.path.join(tmp, 'pair_split.drag'), L, g, nf, l)
 check('two-sphere dissipative torque ratio', r['TD'] / r['T_the'], 0.9, 1e-9)
 check('two-sphere total torque ratio with the split columns', r['T'] / r['T_the'], 0.8, 1e-9)
+# rotating sphere: the z torque (column 3) and its dissipative part (column 4) when present
+write_blocks(os.path.join(tmp, 'spin.torque'), [np.zeros(n), np.zeros(n), -1.0 * np.ones(n)])
+check('rotating-sphere file without the split', fa.dissipative_torque(os.path.join(tmp, 'spin.torque')) is None, True, 0)
+write_blocks(os.path.join(tmp, 'spin_split.torque'),
+             [np.zeros(n), np.zeros(n), -1.0 + 0.3 * rng.standard_normal(n), -1.0 + 0.1 * rng.standard_normal(n),
+              0.3 * rng.standard_normal(n)])
+td, tderr = fa.dissipative_torque(os.path.join(tmp, 'spin_split.torque'))
+check('rotating-sphere dissipative torque', td, -1.0, 4 * 0.1 / math.sqrt(n))
+check('its error', tderr, 0.1 / math.sqrt(n), 0.3 * 0.1 / math.sqrt(n))
 check("eq. 23 torque at the paper's l = 1, u = 0.3349", 8 * math.pi * MU * R ** 3 * 0.3349 * tf, 0.106, 0.001)
 
 print('FAILED: ' + ', '.join(failures) if failures else 'all passed')
