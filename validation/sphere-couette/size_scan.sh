@@ -1,0 +1,31 @@
+#!/bin/bash
+# Size scan of examples/sphere-couette toward the paper's box (README "Size scan"): the paper's
+# shape 40 x 30 x 30 scaled by s = 0.4, 0.5, 0.6 (16 x 12 x 12, 20 x 15 x 15, 24 x 18 x 18),
+# three independent runs (seeds) per size, scheme diagonal (the paper's integrator), t = 3 of
+# start-up and t = 12 of averaging each; then s = 0.8 once. One folder per run in
+# results/size_scan/, each with the drag file and python/sphere_couette.py's table.
+# Run from anywhere: bash validation/sphere-couette/size_scan.sh   (about 70 CPU-minutes)
+set -e
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+root=$here/../..
+source "$root/tools/lammps_env.sh"
+out=$here/results/size_scan
+mkdir -p "$out"
+cp "$PLUGIN" "$out/scan_plugin.so"    # a private copy: rebuilds do not touch the running jobs
+run() {    # s seed equil
+  local s=$1 seed=$2 dir=$out/s$1_seed$2
+  local lx ly
+  lx=$(awk -v s="$s" 'BEGIN { printf "%d", 40 * s }')
+  ly=$(awk -v s="$s" 'BEGIN { printf "%d", 30 * s }')
+  mkdir -p "$dir"
+  (cd "$dir" && "$LMP" -in "$root/examples/sphere-couette/in.sphere-couette" -var plugin "$out/scan_plugin.so" \
+     -var potdir "$root/potentials" -var Lx "$lx" -var Ly "$ly" -var H "$ly" -var seed "$seed" \
+     -var equil "$3" -var steps 12000 -log log.lammps -screen none)
+  /usr/bin/python3 "$root/python/sphere_couette.py" "$dir" > "$dir/table.txt"
+  echo "s = $s seed $seed: $(grep 'drag F_x' "$dir/table.txt")"
+}
+for seed in 1 2 3; do
+  for s in 0.4 0.5 0.6; do run $s $seed 3000; done
+done
+run 0.8 1 6000
+rm -f "$out/scan_plugin.so"
