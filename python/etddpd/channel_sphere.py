@@ -28,6 +28,7 @@ C_D = 24/Re (1 + 0.150 Re^0.681) + 0.407 / (1 + 8710/Re).
   python/channel_sphere.py tube 4.5 4.9         # wall factor: drag in a wider tube, same U
   python/channel_sphere.py drag --slit 6.3 drag.U0.9     # a_h: the wall factor taken out
   python/channel_sphere.py shells profiles.U0.9_nx120_profiles   # slip, a_h from the flow field
+  python/channel_sphere.py line line.U0.9_nx120_profiles         # density and v_x through the sphere
 
 Defaults: rho = 4 (n = 4, m = 1), d = 3, eta = 1.083 (kinetic theory of standard DPD with
 a = 18.75, gamma = 4.5, kBT = 1, n = 4, rc = 1: 0.796 kinetic + 0.287 dissipative).
@@ -596,6 +597,26 @@ def shells_command(args):
                   f'{u[k] / u_inf:8.3f}      {stokes:8.3f}')
 
 
+def line_command(args):
+    """A line profile through the sphere (in.sphere_shear's line files: bin/1d chunks in a thin
+    column): per cell the number density (mean count over the cell's volume --cell-volume, since
+    LAMMPS divides by the whole slab's) and the count-weighted v_x, over the blocks kept."""
+    for path in args.files:
+        blocks = read_chunks(path)
+        start = int(round(args.discard * len(blocks.steps)))
+        if len(blocks.steps) - start < 1:
+            sys.exit(f'channel_sphere: {path} has no block after --discard')
+        count, vx = blocks.column('Ncount')[start:], blocks.column('vx')[start:]
+        coord = blocks.column('Coord1')[0]
+        centre = 0.5 * (coord[0] + coord[-1]) if args.centre is None else args.centre
+        total = count.sum(axis=0)
+        velocity = np.where(total > 0, (vx * count).sum(axis=0) / np.maximum(total, 1e-300), 0.0)
+        print(f'{path}: {len(count)} blocks; distance from the centre, density, v_x')
+        for k in range(len(coord)):
+            print(f'  {coord[k] - centre:7.3f}  {total[k] / len(count) / args.cell_volume:6.3f}  '
+                  f'{velocity[k]:7.4f}')
+
+
 def add_drag_parser(sub, start_up):
     drag = sub.add_parser('drag', parents=[start_up], help='Re and C_D from drag files')
     drag.add_argument('files', nargs='*',
@@ -662,6 +683,13 @@ def add_profile_parsers(sub, start_up):
     shells.add_argument('--radius', type=float, default=1.5,
                         help='the sphere\'s nominal radius (the fluid inside it is counted)')
     shells.add_argument('--batches', type=int, default=5)
+    line = sub.add_parser('line', parents=[start_up],
+                          help='density and v_x along a line of cells through the sphere')
+    line.add_argument('files', nargs='+')
+    line.add_argument('--cell-volume', type=float, default=0.4 * 0.4 * (20 * 4 ** (-1 / 3)) / 29,
+                      help="volume of one cell (default: in.sphere_shear's 0.4 x H/29 x 0.4)")
+    line.add_argument('--centre', type=float,
+                      help='the sphere centre along the line (default: the middle of the cells)')
 
 
 def parse_args(argv=None):
@@ -683,7 +711,8 @@ def parse_args(argv=None):
 
 
 COMMANDS = {'drag': drag_command, 'radius': radius_command, 'velocity': velocity_command,
-            'density': density_command, 'tube': tube_command, 'shells': shells_command}
+            'density': density_command, 'tube': tube_command, 'shells': shells_command,
+            'line': line_command}
 
 
 def main(argv=None):

@@ -278,6 +278,22 @@ class ShellProfile(InTempDir):
             channel_sphere.main(["shells", "--fit-from", "4", "--fit-to", "2", path])
 
 
+class LineProfile(InTempDir):
+    def test_density_per_cell_and_weighted_velocity(self):
+        # two blocks: cell 2 holds 0.4 then 0.2 particles at v_x 1.0 then 0.4; the count-weighted
+        # v_x is (0.4 + 0.08) / 0.6 = 0.8, the density 0.3 / cell volume
+        path = self.path("line.x")
+        with open(path, "w") as out:
+            out.write("# Chunk-averaged data for fix line_profile and group fluid\n"
+                      "# Timestep Number-of-chunks Total-count\n"
+                      "# Chunk Coord1 Ncount density/number vx\n")
+            for step, (n2, v2) in ((1000, (0.4, 1.0)), (2000, (0.2, 0.4))):
+                out.write(f"{step} 3 1\n  1 0.5 0.1 0.0 2.0\n  2 1.5 {n2} 0.0 {v2}\n  3 2.5 0.1 0.0 2.0\n")
+        rows = printed(["line", "--discard", "0", "--cell-volume", "0.1", path]).splitlines()[1:]
+        self.assertEqual(rows[1].split(), ["0.000", "3.000", "0.8000"])
+        self.assertEqual(rows[0].split(), ["-1.000", "1.000", "2.0000"])
+
+
 class TubeWallFactor(unittest.TestCase):
     def test_small_sphere_limits(self):
         # an unbounded fluid as lam -> 0; first reflection 2.105 lam (Faxen's 2.104)

@@ -164,3 +164,11 @@ done
 $PY $T radius --near 2.5 wall_radius.d33_H8_rmax1.02_f0.06 wall_radius.d33_H8_rmax1.02_f0.06_s2
 $PY $T velocity --fit 4 velocity_profile.d33_H8_rmax1.02_f0.06 velocity_profile.d33_H8_rmax1.02_f0.06_s2
 $PY $T density --rmin 3.7 --rmax 6.2 "wall, r_max 1.02=wall_profile.d33_H8_rmax1.02_f0.06_s2" "wall, r_max 3=wall_profile.d33_H8_f0.06_s2"
+echo "== section 6: the viscosity of this fluid by reverse Poiseuille (viscosity.sh)"
+cat viscosity/fits.txt
+echo "== section 6: the paper's length with profiles; half the step in the reduced box"
+$PY $T drag drag.U0.9_nx120_profiles drag.U0.9 drag.U0.9_dt0.005
+$PY $T drag --force total drag.U0.9 drag.U0.9_dt0.005
+$PY $T shells profiles.U0.9_nx120_profiles --discard 0
+$PY $T shells profiles.U0.9_nx120_profiles --discard 0 --fit-from 2.5 --fit-to 5 | head -3
+$PY $T line line.U0.9_nx120_profiles --discard 0
