@@ -11,6 +11,7 @@ straight line in 1/s through the sizes gives the drag at s = 1 (the paper's box)
 1/s = 0 (no walls or images).
 
 usage: python/sphere_couette_sizes.py RUN_DIR... [--from-step N]
+(the steady window of each run starts where python/sphere_couette.py starts it)
 """
 import argparse
 import collections
@@ -21,8 +22,8 @@ import sys
 
 import numpy as np
 
-from .lammps_output import read_ave_time
-from .sphere_couette import DRAG_COLUMNS, PAPER
+from .lammps_output import read_ave_time, read_ave_time_vector
+from .sphere_couette import DRAG_COLUMNS, PAPER, steady_start
 from .statistics import standard_error
 
 PAPER_LX = 40.0
@@ -40,6 +41,10 @@ def box_length(log_path):
 def run_drag(run_dir, from_step):
     """Mean total drag and mean conservative + dissipative drag over the steady window."""
     drag = read_ave_time(os.path.join(run_dir, "drag.sphere-couette")).data
+    if from_step is None:    # each run's own start-up: where its production-only rdf blocks begin
+        rdf_path = os.path.join(run_dir, "rdf.sphere-couette")
+        rdf_steps = read_ave_time_vector(rdf_path).steps if os.path.exists(rdf_path) else []
+        from_step = steady_start(None, drag[:, 0], rdf_steps)
     window = drag[:, 0] > from_step
     if window.sum() < 2:
         sys.exit(f"sphere_couette_sizes: fewer than 2 rows after step {from_step} in {run_dir}")
@@ -80,8 +85,9 @@ def extrapolate(rows):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("runs", nargs="+", help="run folders (drag.sphere-couette and log.lammps each)")
-    ap.add_argument("--from-step", type=int, default=3000,
-                    help="last step of the start-up, excluded (default 3000)")
+    ap.add_argument("--from-step", type=int, default=None,
+                    help="last step of the start-up, excluded (default: each run's own, where its rdf "
+                         "blocks begin (python/sphere_couette.py: its map blocks); without one the first 20 %%)")
     args = ap.parse_args(argv)
     totals, split = collections.defaultdict(list), collections.defaultdict(list)
     for run in args.runs:

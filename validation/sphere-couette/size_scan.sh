@@ -3,7 +3,8 @@
 # shape 40 x 30 x 30 scaled by s = 0.4, 0.5, 0.6 (16 x 12 x 12, 20 x 15 x 15, 24 x 18 x 18),
 # three independent runs (seeds) per size, scheme diagonal (the paper's integrator), t = 3 of
 # start-up and t = 12 of averaging each; then s = 0.8 once. One folder per run in
-# results/size_scan/, each with the drag file and python/sphere_couette.py's table.
+# results/size_scan/, each with the drag and rdf files, the log and python/sphere_couette.py's
+# table; the summary over sizes (python/sphere_couette_sizes.py) in results/size_scan/summary.txt.
 # Run from anywhere: bash validation/sphere-couette/size_scan.sh   (about 70 CPU-minutes)
 set -e
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -29,3 +30,6 @@ for seed in 1 2 3; do
 done
 run 0.8 1 6000
 rm -f "$out/scan_plugin.so"
+# the mid-plane maps (up to 3 MB a run) are summarised in each table.txt and not kept
+rm -f "$out"/s*/map.sphere-couette
+/usr/bin/python3 "$root/python/sphere_couette_sizes.py" "$out"/s* | tee "$out/summary.txt"
