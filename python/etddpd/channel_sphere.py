@@ -143,6 +143,18 @@ def read_chunks(path):
     return blocks
 
 
+def read_kept_chunks(path, discard, minimum):
+    """A fix ave/chunk file of the examples without the first --discard fraction of its blocks;
+    stops with a message where fewer than `minimum` blocks are left."""
+    blocks = read_chunks(path)
+    start = int(round(discard * len(blocks.steps)))
+    blocks = blocks._replace(steps=blocks.steps[start:], data=blocks.data[start:])
+    if len(blocks.steps) < minimum:
+        left = 'no block' if minimum == 1 else f'fewer than {minimum} blocks'
+        sys.exit(f'channel_sphere: {path} has {left} after --discard')
+    return blocks
+
+
 def batch_mean(values, batches):
     """Mean and its standard error from `batches` contiguous batch means."""
     values = np.asarray(values, dtype=float)
@@ -418,11 +430,7 @@ def read_radial_bins(path, discard, sphere_x=None):
     radial bin centre Coord1, slab centre Coord2) after dropping the first --discard fraction
     of its blocks: (the blocks, radius per chunk, the distinct radii, mask of the chunks in
     the slabs more than a quarter box from the sphere, total length of those slabs)."""
-    blocks = read_chunks(path)
-    start = int(round(discard * len(blocks.steps)))
-    blocks = blocks._replace(steps=blocks.steps[start:], data=blocks.data[start:])
-    if len(blocks.steps) < 2:
-        sys.exit(f'channel_sphere: {path} has fewer than 2 blocks after --discard')
+    blocks = read_kept_chunks(path, discard, 2)
     radius = blocks.column('Coord1')[0]
     axial = blocks.column('Coord2')[0]
     slabs = np.unique(axial)
@@ -542,7 +550,7 @@ def shell_fit(r, u, weight):
 
 
 def shell_profile(count, vx, rows):
-    """Count-weighted v_x and the mean count per shell over the given blocks."""
+    """Count-weighted v_x and the mean count per chunk (shell, cell) over the given blocks."""
     c = count[rows]
     n = c.sum(axis=0)
     return np.where(n > 0, (vx[rows] * c).sum(axis=0) / np.maximum(n, 1e-300), 0.0), n / len(c)
@@ -556,11 +564,8 @@ def shells_command(args):
     if not 0.0 < args.fit_from < args.fit_to:
         sys.exit('channel_sphere: shells needs 0 < --fit-from < --fit-to')
     for path in args.files:
-        blocks = read_chunks(path)
-        start = int(round(args.discard * len(blocks.steps)))
-        if len(blocks.steps) - start < 2:
-            sys.exit(f'channel_sphere: {path} has fewer than 2 blocks after --discard')
-        count, vx = blocks.column('Ncount')[start:], blocks.column('vx')[start:]
+        blocks = read_kept_chunks(path, args.discard, 2)
+        count, vx = blocks.column('Ncount'), blocks.column('vx')
         radius = blocks.column('Coord1')[0]
         width = radius[1] - radius[0]
         volume = 4.0 / 3.0 * math.pi * ((radius + width / 2) ** 3 - (radius - width / 2) ** 3)
@@ -602,18 +607,13 @@ def line_command(args):
     column): per cell the number density (mean count over the cell's volume --cell-volume, since
     LAMMPS divides by the whole slab's) and the count-weighted v_x, over the blocks kept."""
     for path in args.files:
-        blocks = read_chunks(path)
-        start = int(round(args.discard * len(blocks.steps)))
-        if len(blocks.steps) - start < 1:
-            sys.exit(f'channel_sphere: {path} has no block after --discard')
-        count, vx = blocks.column('Ncount')[start:], blocks.column('vx')[start:]
+        blocks = read_kept_chunks(path, args.discard, 1)
         coord = blocks.column('Coord1')[0]
         centre = 0.5 * (coord[0] + coord[-1]) if args.centre is None else args.centre
-        total = count.sum(axis=0)
-        velocity = np.where(total > 0, (vx * count).sum(axis=0) / np.maximum(total, 1e-300), 0.0)
-        print(f'{path}: {len(count)} blocks; distance from the centre, density, v_x')
+        velocity, mean_count = shell_profile(blocks.column('Ncount'), blocks.column('vx'), slice(None))
+        print(f'{path}: {len(blocks.steps)} blocks; distance from the centre, density, v_x')
         for k in range(len(coord)):
-            print(f'  {coord[k] - centre:7.3f}  {total[k] / len(count) / args.cell_volume:6.3f}  '
+            print(f'  {coord[k] - centre:7.3f}  {mean_count[k] / args.cell_volume:6.3f}  '
                   f'{velocity[k]:7.4f}')
 
 

@@ -170,5 +170,5 @@ echo "== section 6: the paper's length with profiles; half the step in the reduc
 $PY $T drag drag.U0.9_nx120_profiles drag.U0.9 drag.U0.9_dt0.005
 $PY $T drag --force total drag.U0.9 drag.U0.9_dt0.005
 $PY $T shells profiles.U0.9_nx120_profiles --discard 0
-$PY $T shells profiles.U0.9_nx120_profiles --discard 0 --fit-from 2.5 --fit-to 5 | head -3
+$PY $T shells profiles.U0.9_nx120_profiles --discard 0 --fit-from 2.5 --fit-to 5
 $PY $T line line.U0.9_nx120_profiles --discard 0
