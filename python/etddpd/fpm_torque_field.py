@@ -1,0 +1,196 @@
+"""The two-sphere torque of pair_style dpd/fpm from the fluid's fields (validation/fpm README
+section 4.2; runs by validation/fpm/torque_field.sh).
+
+A colloid held at rest feels from each fluid atom j the shear friction of the pair law
+(src/kernels/fpm_kernel.h), which is linear in j's velocity v_j and spin w_j at fixed geometry.
+Its mean dissipative torque is therefore the sum over small bins about the colloid of
+  (mean number of atoms in the bin) x (pair torque at the bin's centre, its mean v and w),
+exactly up to the bins' size. With that sum the measured torque is taken apart:
+
+  measured field       the pair run's own density, velocity and spin (checks the sum against
+                       the torque the run measured directly);
+  without layering     the same velocities and spins, the density replaced by the superposition
+                       of two lone colloids' radial profiles n(|x - c1|) n(|x - c2|) / n_bulk
+                       (what is left if the fluid between the colloids had no structure of its
+                       own); the difference is the layering's share;
+  Stokes field         the pair law summed over the superposed density with the fluid moving as
+                       Stokes flow past two spheres of radius R (one reflection: the stream plus
+                       each sphere's disturbance) and spinning at half its vorticity, divided by
+                       the same sum for a uniform rotation at the spin Stokes flow has at the
+                       colloid's centre: how much the finite reach of the pair law (rc = 1 against
+                       R = 0.27) weights the neighbour's near field above Faxen's point value.
+"""
+import argparse
+import math
+
+import numpy as np
+
+from .lammps_output import read_ave_chunk
+
+# colloid-fluid shear friction of potentials/fpm_colloid_pan2008.in
+GAMMA_S, EXPONENT, CUTOFF = 5.5, 0.5, 1.0
+BULK_DENSITY = 3.0
+PAPER_R = 0.2737
+
+
+def shear_torque(offset, velocity, spin, gamma_s=GAMMA_S, s=EXPONENT, rc=CUTOFF):
+    """Dissipative torque on a colloid at rest (no spin) at the origin from fluid atoms at
+    `offset` (x_j - x_i, rows) moving with `velocity` and spinning with `spin`: the shear part
+    of the pair law, T_i = -(r_ij / 2) x F_ij with F_ij = -gamma_S w [u_ij - (e . u_ij) e],
+    u_ij = v_ij + (r_ij / 2) x (Omega_i + Omega_j), r_ij = x_i - x_j, w = (1 - r / rc)^s."""
+    offset = np.atleast_2d(np.asarray(offset, dtype=float))
+    velocity = np.atleast_2d(np.asarray(velocity, dtype=float))
+    spin = np.atleast_2d(np.asarray(spin, dtype=float))
+    r_ij = -offset
+    r = np.linalg.norm(r_ij, axis=1)
+    inside = (r < rc) & (r > 0.0)
+    safe_r = np.where(inside, r, 1.0)
+    e = r_ij / safe_r[:, None]
+    weight = np.where(inside, np.clip(1.0 - safe_r / rc, 0.0, None) ** s, 0.0)
+    v_ij = -velocity
+    half = 0.5 * r_ij
+    slip = v_ij + np.cross(half, spin)
+    slip_perp = slip - np.sum(slip * e, axis=1)[:, None] * e
+    force = -gamma_s * weight[:, None] * slip_perp
+    return -np.cross(half, force)
+
+
+class Field:
+    """One fix ave/chunk file of in.fpm_periodic_drag (field yes), last block: bin centres
+    relative to colloid 1 (the cube's centre), mean atoms per bin, mean velocity and spin."""
+
+    def __init__(self, path):
+        rows = read_ave_chunk(path).data[-1]
+        centres = rows[:, 1:4]
+        self.spacing = float(np.min(np.diff(np.unique(centres[:, 0]))))
+        self.offset = centres - 0.5 * (centres.min(axis=0) + centres.max(axis=0))
+        self.count = rows[:, 5] * self.spacing ** 3
+        self.velocity = rows[:, 6:9]
+        self.spin = rows[:, 9:12]
+
+    def torque(self, count=None, velocity=None, spin=None, mask=None):
+        """z torque on colloid 1 summed over the bins (optionally with another count, velocity
+        or spin per bin, or over the bins in mask only)."""
+        count = self.count if count is None else count
+        t = shear_torque(self.offset, self.velocity if velocity is None else velocity,
+                         self.spin if spin is None else spin)[:, 2] * count
+        return float(np.sum(t if mask is None else t[mask]))
+
+
+def radial_density(field, width=0.05, rmax=1.0):
+    """Number density about a lone colloid against distance (shells of `width` up to rmax,
+    bulk beyond): a function of r."""
+    r = np.linalg.norm(field.offset, axis=1)
+    edges = np.arange(0.0, rmax + 0.5 * width, width)
+    counts, _ = np.histogram(r, edges, weights=field.count)
+    volume, _ = np.histogram(r, edges, weights=np.full(len(r), field.spacing ** 3))
+    density = np.where(volume > 0, counts / np.where(volume > 0, volume, 1.0), BULK_DENSITY)
+    mids = 0.5 * (edges[1:] + edges[:-1])
+
+    def n(x):
+        return np.where(x < rmax, np.interp(x, mids, density), BULK_DENSITY)
+    return n
+
+
+def superposed_density(offset, lone_density, l):
+    """Two lone colloids' profiles multiplied (colloid 1 at the origin, colloid 2 at +l along
+    y), over the bulk density: the fluid's density without a structure of its own between them."""
+    other = offset - np.array([0.0, l, 0.0])
+    return lone_density(np.linalg.norm(offset, axis=1)) * \
+        lone_density(np.linalg.norm(other, axis=1)) / BULK_DENSITY
+
+
+def stokes_disturbance(x, U, R):
+    """Velocity and spin (half the vorticity) that a sphere of radius R at rest at the origin
+    adds to a uniform stream U along x (Stokes flow); the fluid inside the sphere is at rest
+    (disturbance -U there, spin 0)."""
+    r = np.linalg.norm(x, axis=1)
+    out = r < R
+    r = np.where(out, 1.0, r)
+    xhat = np.array([1.0, 0.0, 0.0])
+    along = x[:, 0]
+    u = -0.75 * R * U * (xhat / r[:, None] + x * (along / r ** 3)[:, None]) \
+        - 0.25 * R ** 3 * U * (xhat / r[:, None] ** 3 - 3.0 * x * (along / r ** 5)[:, None])
+    spin = 0.75 * R * U * np.cross(x, xhat) / r[:, None] ** 3
+    u[out] = -U * xhat
+    spin[out] = 0.0
+    return u, spin
+
+
+def stokes_sampling(l, lone_density, R=PAPER_R, spacing=0.05):
+    """The pair law summed over Stokes flow about the pair (one reflection) with the superposed
+    density, by parts (stream, colloid 1's disturbance, colloid 2's), and over a uniform
+    rotation at Stokes flow's spin at colloid 1's centre with the lone density; their ratio."""
+    g = np.arange(-1.0 + 0.5 * spacing, 1.0, spacing)
+    x = np.stack(np.meshgrid(g, g, g, indexing='ij'), axis=-1).reshape(-1, 3)
+    volume = spacing ** 3
+    U = 1.0
+    count = superposed_density(x, lone_density, l) * volume
+    c2 = np.array([0.0, l, 0.0])
+    stream = np.tile([U, 0.0, 0.0], (len(x), 1))
+    u1, w1 = stokes_disturbance(x, U, R)
+    u2, w2 = stokes_disturbance(x - c2, U, R)
+    zero = np.zeros_like(x)
+    parts = {'stream': shear_torque(x, stream, zero)[:, 2] @ count,
+             'colloid 1': shear_torque(x, u1, w1)[:, 2] @ count,
+             'colloid 2': shear_torque(x, u2, w2)[:, 2] @ count}
+    total = sum(parts.values())
+    point_spin = stokes_disturbance(-c2[None, :], U, R)[1][0]
+    rotation = np.cross(point_spin, x)
+    count1 = lone_density(np.linalg.norm(x, axis=1)) * volume
+    point = shear_torque(x, rotation, np.tile(point_spin, (len(x), 1)))[:, 2] @ count1
+    return dict(parts=parts, total=float(total), point=float(point), ratio=float(total / point),
+                faxen_spin=float(point_spin[2]))
+
+
+def pair_summary(l, field, lone_density, measured, min_fraction=0.1):
+    """Measured torque on colloid 1 (mean dissipative part, its error) against the sums over
+    the pair run's field: whole, the share of the bins within the cutoff of colloid 2, and with
+    the layer-free density (bins where fewer than min_fraction of the superposed density's
+    atoms were seen are left out of both sums of that comparison: their velocity is unknown)."""
+    t_field = field.torque()
+    near_other = np.linalg.norm(field.offset - np.array([0.0, l, 0.0]), axis=1) < CUTOFF
+    n_sup = superposed_density(field.offset, lone_density, l) * field.spacing ** 3
+    seen = field.count >= min_fraction * n_sup
+    t_seen = field.torque(mask=seen)
+    t_sup = field.torque(count=n_sup, mask=seen)
+    return dict(l=l, measured=measured[0], measured_err=measured[1], field=t_field,
+                near_other=field.torque(mask=near_other), field_seen=t_seen, layer_free=t_sup,
+                layering=t_seen - t_sup, unseen_fraction=float(n_sup[~seen].sum() / n_sup.sum()))
+
+
+def measured_torque(drag_path):
+    """Mean and batch error of colloid 1's dissipative z torque (column 10 of the .drag file)."""
+    from .fpm_analysis import batch_mean, read_blocks
+    return batch_mean(read_blocks(drag_path)[:, 9])
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    p.add_argument('--lone', required=True, help='field file of one colloid alone (l = 0)')
+    p.add_argument('--pair', nargs=3, action='append', default=[], metavar=('L', 'FIELD', 'DRAG'),
+                   help='separation, field file and .drag file of a two-colloid run')
+    a = p.parse_args(argv)
+    lone = Field(a.lone)
+    n = radial_density(lone)
+    print('lone colloid: density at r = ' + ', '.join(
+        f'{r:.2f}: {float(n(np.array(r))):.2f}' for r in (0.3, 0.4, 0.5, 0.6, 0.8, 0.95)))
+    print(f'lone colloid: torque summed over its field {lone.torque():+.4f} (zero by symmetry)')
+    print('| l | measured dissipative torque on colloid 1 | summed over the field | of it, bins '
+          'within rc of colloid 2 | seen bins, measured density | seen bins, layer-free density '
+          '| layering share | Stokes-field sampling / point value |')
+    print('|---|---|---|---|---|---|---|---|')
+    for l, field_path, drag_path in a.pair:
+        l = float(l)
+        s = pair_summary(l, Field(field_path), n, measured_torque(drag_path))
+        st = stokes_sampling(l, n)
+        print(f'| {l:g} | {s["measured"]:.4f} +- {s["measured_err"]:.4f} | {s["field"]:.4f} '
+              f'({s["field"] / s["measured"]:.3f}) | {s["near_other"]:.4f} | {s["field_seen"]:.4f} '
+              f'| {s["layer_free"]:.4f} | {s["layering"] / s["field_seen"]:+.3f} '
+              f'(unseen {s["unseen_fraction"]:.3f}) | {st["ratio"]:.3f} |')
+    for l, _, _ in a.pair:
+        st = stokes_sampling(float(l), n)
+        print(f'Stokes field, l = {l}: parts ' + ', '.join(f'{k} {v:+.4f}' for k, v in st['parts'].items())
+              + f'; total {st["total"]:.4f}, uniform rotation at the point spin '
+              f'{st["faxen_spin"]:.4f}: {st["point"]:.4f}, ratio {st["ratio"]:.3f}')
+    return 0

@@ -1,0 +1,104 @@
+#!/usr/bin/python3
+"""Check python/etddpd/fpm_torque_field.py: the pair law's torque against hand-worked cases,
+the Stokes disturbance against its defining properties (no slip on the sphere, spin = half the
+curl, no divergence), the sum over a synthetic field file against the sum over its atoms, and
+the sampling ratio's limits (1 far from the neighbour, 0 torque for a lone colloid). Exits 1 on
+any mismatch."""
+import os
+import sys
+import tempfile
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, '..', '..', 'python'))
+from etddpd import fpm_torque_field as ft  # noqa: E402
+
+failures = []
+
+
+def check(name, value, expected, tol):
+    ok = abs(value - expected) <= tol
+    print(f'{"ok  " if ok else "FAIL"} {name}: {value:.6g} (expected {expected:.6g} +- {tol:.2g})')
+    if not ok:
+        failures.append(name)
+
+
+gamma, d, U, W = ft.GAMMA_S, 0.6, 0.7, 1.3
+w = (1 - d) ** ft.EXPONENT
+# fluid above the colloid streaming along +x drags its top forward: torque -z, d gamma w U / 2
+t = ft.shear_torque([[0, d, 0]], [[U, 0, 0]], [[0, 0, 0]])[0]
+check('streaming atom above: torque z', t[2], -d * gamma * w * U / 2, 1e-12)
+check('streaming atom above: torque x', t[0], 0.0, 1e-12)
+# an atom co-rotating at W about z (velocity W z x x, spin W): gamma w W d^2 / 4 along +z
+t = ft.shear_torque([[d, 0, 0]], [[0, W * d, 0]], [[0, 0, W]])[0]
+check('co-rotating atom: torque z', t[2], gamma * w * W * d * d / 4, 1e-12)
+# central motion makes no torque; nothing beyond the cutoff
+t = ft.shear_torque([[0, d, 0]], [[0, U, 0]], [[0, 0, 0]])[0]
+check('atom moving along the line of centres: no torque', float(np.abs(t).max()), 0.0, 1e-12)
+t = ft.shear_torque([[0, 1.01, 0]], [[U, 0, 0]], [[0, 0, 0]])[0]
+check('atom beyond the cutoff: no torque', float(np.abs(t).max()), 0.0, 0.0)
+
+# Stokes flow past a sphere at rest: u + U = 0 on its surface, spin = curl / 2, div u = 0
+R = ft.PAPER_R
+rng = np.random.default_rng(5)
+n = rng.normal(size=(20, 3))
+n /= np.linalg.norm(n, axis=1)[:, None]
+u, _ = ft.stokes_disturbance(R * n, U, R)
+check('Stokes: no slip on the sphere', float(np.abs(u + [U, 0, 0]).max()), 0.0, 1e-12)
+x = rng.uniform(-1.5, 1.5, size=(20, 3))
+x = x[np.linalg.norm(x, axis=1) > 2 * R]
+h = 1e-5
+grad = np.empty((len(x), 3, 3))    # grad[:, i, k] = d u_k / d x_i
+for i in range(3):
+    step = np.zeros(3)
+    step[i] = h
+    grad[:, i, :] = (ft.stokes_disturbance(x + step, U, R)[0]
+                     - ft.stokes_disturbance(x - step, U, R)[0]) / (2 * h)
+curl = np.stack([grad[:, 1, 2] - grad[:, 2, 1], grad[:, 2, 0] - grad[:, 0, 2],
+                 grad[:, 0, 1] - grad[:, 1, 0]], axis=1)
+_, spin = ft.stokes_disturbance(x, U, R)
+check('Stokes: spin is half the curl', float(np.abs(spin - curl / 2).max()), 0.0, 1e-6)
+check('Stokes: no divergence', float(np.abs(np.trace(grad, axis1=1, axis2=2)).max()), 0.0, 1e-6)
+
+# a synthetic field file: the bins' sum equals the sum over atoms placed at the bins' centres
+with tempfile.TemporaryDirectory() as tmp:
+    path = os.path.join(tmp, 'f.field')
+    spacing, centre = 0.1, np.array([4.0, 3.5, 4.0])
+    g = np.arange(-1 + spacing / 2, 1, spacing)
+    xyz = np.stack(np.meshgrid(g, g, g, indexing='ij'), axis=-1).reshape(-1, 3)
+    density = 3.0 * (1 + 0.5 * np.sin(3 * xyz[:, 1])) * (np.linalg.norm(xyz, axis=1) > 0.3)
+    velocity = np.stack([0.6 + 0.4 * xyz[:, 1], 0.1 * xyz[:, 0], 0 * xyz[:, 0]], axis=1)
+    spin = np.stack([0 * xyz[:, 0], 0 * xyz[:, 0], -0.2 + 0.1 * xyz[:, 0]], axis=1)
+    with open(path, 'w') as f:
+        f.write('# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n'
+                '# Chunk Coord1 Coord2 Coord3 Ncount density/number vx vy vz c_spin[1] c_spin[2] c_spin[3]\n')
+        f.write(f'1000 {len(xyz)} 1\n')
+        for k, (p, n_, v, s) in enumerate(zip(xyz + centre, density, velocity, spin)):
+            f.write(f'{k + 1} {p[0]:.6f} {p[1]:.6f} {p[2]:.6f} {n_ * spacing ** 3:.8g} {n_:.10g} '
+                    + ' '.join(f'{c:.10g}' for c in (*v, *s)) + '\n')
+    field = ft.Field(path)
+    direct = float(np.sum(ft.shear_torque(xyz, velocity, spin)[:, 2] * density * spacing ** 3))
+    check('field sum equals the sum over atoms at the bins', field.torque(), direct, 1e-9 * max(1, abs(direct)))
+    check('field: bin spacing read', field.spacing, spacing, 1e-9)
+    # density even in y about the colloid and a stream along x: no z torque
+    sym = ft.Field(path)
+    sym.count = 3.0 * np.ones_like(sym.count) * spacing ** 3
+    sym.velocity = np.tile([0.6, 0, 0], (len(xyz), 1))
+    sym.spin = np.zeros_like(sym.spin)
+    check('uniform stream, uniform density: no torque', sym.torque(), 0.0, 1e-9)
+    lone = ft.radial_density(sym)
+    check('radial profile of a uniform field', float(lone(np.array(0.7))), 3.0, 1e-9)
+
+# far from the neighbour the sampled Stokes field is its point value; a uniform fluid
+flat = lambda r: np.full(np.shape(r), ft.BULK_DENSITY)  # noqa: E731
+far = ft.stokes_sampling(8.0, flat, spacing=0.1)
+check('Stokes sampling at l = 8: ratio to the point value', far['ratio'], 1.0, 0.03)
+check('Stokes sampling: point spin is Faxen\'s 3 R U / (4 l^2)', far['faxen_spin'],
+      0.75 * R / 64.0, 1e-12)
+check('Stokes sampling, uniform density: the stream makes no torque', far['parts']['stream'], 0.0, 1e-9)
+
+if failures:
+    print(f'{len(failures)} check(s) failed: {failures}')
+    sys.exit(1)
+print('all checks passed')
