@@ -145,10 +145,24 @@ def couette(prefix, H, zfit=2.5, mu=PAPER_MU, R=PAPER_R):
     w, werr = batch_mean(d[:, 3])
     half = rate / 2
     t_the = 8 * math.pi * mu * R ** 3 * half
-    return dict(rate=rate, v0=v0, half=half, T=t, Terr=terr, T_the=t_the, Omega=w, Omega_err=werr,
-                wall_v=(np.polyval([rate, v0], -H / 2), np.polyval([rate, v0], H / 2)),
-                Ty=float(d[:, 4].mean()), Trot=float(d[:, 5].mean()), nblocks=len(d),
-                Re=3.0 * half * R ** 2 / mu)
+    out = dict(rate=rate, v0=v0, half=half, T=t, Terr=terr, T_the=t_the, Omega=w, Omega_err=werr,
+               wall_v=(np.polyval([rate, v0], -H / 2), np.polyval([rate, v0], H / 2)),
+               Ty=float(d[:, 4].mean()), Trot=float(d[:, 5].mean()), nblocks=len(d),
+               Re=3.0 * half * R ** 2 / mu, spun=bool(np.all(d[:, 3] == d[0, 3])))
+    if os.path.exists(prefix + '.split'):
+        # the torques' dissipative parts (compute dpd/split torque yes): fixed colloids, and the
+        # even colloids' total and dissipative torque (spun at a fixed Omega with even_mode spun).
+        # With Omega the even colloids' spin, T_fixed - T_even = B Omega: the rotational friction
+        # measured in the shear flow itself, in units of 8 pi mu R^3 below.
+        sp = read_blocks(prefix + '.split')
+        out['TD'], out['TDerr'] = batch_mean(sp[:, 1])
+        out['T_even'], out['T_even_err'] = batch_mean(sp[:, 2])
+        out['TD_even'], out['TD_even_err'] = batch_mean(sp[:, 3])
+        if out['spun'] and w != 0.0:
+            diff, diff_err = batch_mean(sp[:, 1] - sp[:, 3])
+            unit = 8 * math.pi * mu * R ** 3 * w
+            out['B'], out['B_err'] = diff / unit, diff_err / unit
+    return out
 
 
 def poiseuille(prefix, g, H, h, mu=PAPER_MU, R=PAPER_R, lx=15.0, ly=6.0):
@@ -307,6 +321,13 @@ def couette_rows(a, rows):
     """--couette: torque on fixed colloids and spin of free ones in Couette flow."""
     for label, prefix, H in a.couette:
         r = couette(prefix, float(H))
+        if abs(r['rate']) < 0.05 and 'B' in r:
+            # walls at rest: only the spun colloids' rotational friction means anything
+            rows.append((f'{label}: no shear (fitted rate {r["rate"]:.4f}); rotational friction '
+                         f'(T_fixed - T_spun) / 8 pi mu R^3 Omega at Omega = {r["Omega"]:.3f} '
+                         f'(dissipative parts)', '1', f'{r["B"]:.4f} +- {r["B_err"]:.4f}',
+                         f'fluid kBT (v_y) {r["Ty"]:.4f}'))
+            continue
         rows.append((f'Couette, {label}: shear rate {r["rate"]:.4f} ((1/2) curl v = {r["half"]:.4f}), '
                      f'Re = rho |(1/2) curl v| R^2 / mu = {r["Re"]:.3f}, {r["nblocks"]} blocks; '
                      f'torque on the fixed (Omega = 0) colloids / 8 pi mu R^3 (1/2) curl v',
@@ -315,9 +336,24 @@ def couette_rows(a, rows):
                      f'theory {r["T_the"]:.4f})',
                      f'fit v(+-H/2) = {r["wall_v"][0]:.3f}, {r["wall_v"][1]:.3f}; fluid kBT (v_y) {r["Ty"]:.4f}, '
                      f'rotational {r["Trot"]:.4f}'))
-        rows.append((f'Couette, {label}: spin of the free colloids / (1/2) curl v', '',
-                     f'{r["Omega"] / r["half"]:.3f} +- {r["Omega_err"] / r["half"]:.3f} '
-                     f'(Omega = {r["Omega"]:.4f} +- {r["Omega_err"]:.4f})', ''))
+        if 'TD' in r:
+            rows.append((f'Couette, {label}: dissipative part of the fixed colloids\' torque / '
+                         f'8 pi mu R^3 (1/2) curl v', '1',
+                         f'{r["TD"] / r["T_the"]:.3f} +- {r["TDerr"] / r["T_the"]:.3f}', ''))
+        if not r['spun']:
+            rows.append((f'Couette, {label}: spin of the free colloids / (1/2) curl v', '',
+                         f'{r["Omega"] / r["half"]:.3f} +- {r["Omega_err"] / r["half"]:.3f} '
+                         f'(Omega = {r["Omega"]:.4f} +- {r["Omega_err"]:.4f})', ''))
+        elif 'TD' in r:
+            rows.append((f'Couette, {label}: colloids spun at Omega = {r["Omega"]:.4f} '
+                         f'(= {r["Omega"] / r["half"]:.3f} (1/2) curl v): torque / 8 pi mu R^3 (1/2) curl v, '
+                         f'total and dissipative part', '0 at Omega = (1/2) curl v',
+                         f'{r["T_even"] / r["T_the"]:+.3f} +- {r["T_even_err"] / r["T_the"]:.3f}, '
+                         f'{r["TD_even"] / r["T_the"]:+.3f} +- {r["TD_even_err"] / r["T_the"]:.3f}', ''))
+            if 'B' in r:
+                rows.append((f'Couette, {label}: rotational friction in the shear flow, '
+                             f'(T_fixed - T_spun) / 8 pi mu R^3 Omega (dissipative parts)', '1',
+                             f'{r["B"]:.4f} +- {r["B_err"]:.4f}', ''))
 
 
 def poiseuille_rows(a, rows):

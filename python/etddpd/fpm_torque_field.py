@@ -117,10 +117,55 @@ def stokes_disturbance(x, U, R):
     return u, spin
 
 
-def stokes_sampling(l, lone_density, R=PAPER_R, spacing=0.05):
+class AxialField:
+    """One fix ave/chunk file of in.fpm_periodic_drag (axial yes): the flow about one colloid in
+    rings about the flow axis (x) through its centre, last block, as the disturbance it adds to
+    the stream it meets, per unit of that stream. Beyond the rings (|x| or radius above their
+    range less one bin) the Stokes disturbance of radius R stands in."""
+
+    def __init__(self, path, stream, R=PAPER_R):
+        from scipy.interpolate import RegularGridInterpolator
+        rows = read_ave_chunk(path).data[-1]
+        c1, c2 = rows[:, 1], rows[:, 2]
+        radial, axial = (c1, c2) if c1.min() >= 0.0 and c1.max() < c2.max() - c2.min() else (c2, c1)
+        r_centres, a_centres = np.unique(radial), np.unique(axial)
+        a_centres = a_centres - 0.5 * (a_centres.min() + a_centres.max())
+        shape = (len(a_centres), len(r_centres))
+        order = np.lexsort((radial, axial))    # axial major, radial minor
+
+        def grid(column):
+            return rows[order, column].reshape(shape)
+        self.stream, self.R = stream, R
+        self.reach = (a_centres.max(), r_centres.max())
+        self.count = grid(3)
+        kwargs = dict(bounds_error=False, fill_value=None)
+        self.vx = RegularGridInterpolator((a_centres, r_centres), grid(5) / stream - 1.0, **kwargs)
+        self.vr = RegularGridInterpolator((a_centres, r_centres), grid(6) / stream, **kwargs)
+        self.wphi = RegularGridInterpolator((a_centres, r_centres), grid(7) / stream, **kwargs)
+
+    def disturbance(self, x):
+        """Velocity and spin the colloid (at the origin) adds at x, per unit stream along x."""
+        axial = x[:, 0]
+        radius = np.hypot(x[:, 1], x[:, 2])
+        safe = np.where(radius > 0.0, radius, 1.0)
+        rhat = np.stack([np.zeros_like(axial), x[:, 1] / safe, x[:, 2] / safe], axis=1)
+        phihat = np.stack([np.zeros_like(axial), -rhat[:, 2], rhat[:, 1]], axis=1)
+        point = np.stack([axial, radius], axis=1)
+        u = self.vx(point)[:, None] * np.array([1.0, 0.0, 0.0]) + self.vr(point)[:, None] * rhat
+        w = self.wphi(point)[:, None] * phihat
+        outside = (np.abs(axial) > self.reach[0]) | (radius > self.reach[1])
+        if np.any(outside):
+            us, ws = stokes_disturbance(x[outside], 1.0, self.R)
+            u[outside], w[outside] = us, ws
+        return u, w
+
+
+def stokes_sampling(l, lone_density, R=PAPER_R, spacing=0.05, measured=None):
     """The pair law summed over Stokes flow about the pair (one reflection) with the superposed
     density, by parts (stream, colloid 1's disturbance, colloid 2's), and over a uniform
-    rotation at Stokes flow's spin at colloid 1's centre with the lone density; their ratio."""
+    rotation at Stokes flow's spin at colloid 1's centre with the lone density; their ratio.
+    With measured (an AxialField), each colloid's disturbance is instead the measured flow
+    about a lone colloid (the pair law's own near field)."""
     g = np.arange(-1.0 + 0.5 * spacing, 1.0, spacing)
     x = np.stack(np.meshgrid(g, g, g, indexing='ij'), axis=-1).reshape(-1, 3)
     volume = spacing ** 3
@@ -128,8 +173,9 @@ def stokes_sampling(l, lone_density, R=PAPER_R, spacing=0.05):
     count = superposed_density(x, lone_density, l) * volume
     c2 = np.array([0.0, l, 0.0])
     stream = np.tile([U, 0.0, 0.0], (len(x), 1))
-    u1, w1 = stokes_disturbance(x, U, R)
-    u2, w2 = stokes_disturbance(x - c2, U, R)
+    disturbance = measured.disturbance if measured else (lambda y: stokes_disturbance(y, U, R))
+    u1, w1 = disturbance(x)
+    u2, w2 = disturbance(x - c2)
     zero = np.zeros_like(x)
     parts = {'stream': shear_torque(x, stream, zero)[:, 2] @ count,
              'colloid 1': shear_torque(x, u1, w1)[:, 2] @ count,
@@ -165,12 +211,45 @@ def measured_torque(drag_path):
     return batch_mean(read_blocks(drag_path)[:, 9])
 
 
+def weighted_mean(values, errors):
+    """Inverse-variance weighted mean, its error and chi^2 about it."""
+    v, e = np.asarray(values, dtype=float), np.asarray(errors, dtype=float)
+    w = 1.0 / e ** 2
+    mean = float(np.sum(w * v) / np.sum(w))
+    return mean, float(1.0 / math.sqrt(np.sum(w))), float(np.sum(w * (v - mean) ** 2))
+
+
+def combined_runs(l, g, paths, L=8.0, nfluid=1534):
+    """Each two-sphere run's dissipative torque / eq. (23) (fpm_analysis.two_spheres, half the
+    difference of the two colloids) and their weighted mean."""
+    from .fpm_analysis import two_spheres
+    ratios = []
+    for path in paths:
+        r = two_spheres(path, L, g, nfluid, l)
+        ratios.append((r['TD'] / r['T_the'], r['TDerr'] / r['T_the']))
+    return ratios, weighted_mean(*zip(*ratios))
+
+
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__.split('\n')[0])
-    p.add_argument('--lone', required=True, help='field file of one colloid alone (l = 0)')
+    p.add_argument('--lone', help='field file of one colloid alone (l = 0)')
+    p.add_argument('--runs', nargs='+', action='append', default=[], metavar='L G FILE',
+                   help='separation, body force and the .drag files of independent two-sphere runs '
+                        '(cube of side 8, 1,534 fluid atoms): each one\'s dissipative torque / eq. (23) '
+                        'and their weighted mean')
+    p.add_argument('--axial', nargs=2, metavar=('FILE', 'STREAM'),
+                   help='ring file of one colloid alone (axial yes) and the stream it meets '
+                        '(its drag over 6 pi mu R): the sampling ratio with its measured flow too')
     p.add_argument('--pair', nargs=3, action='append', default=[], metavar=('L', 'FIELD', 'DRAG'),
                    help='separation, field file and .drag file of a two-colloid run')
     a = p.parse_args(argv)
+    for spec in a.runs:
+        ratios, (mean, err, chi2) = combined_runs(float(spec[0]), float(spec[1]), spec[2:])
+        print(f'l = {spec[0]}: dissipative torque / eq. (23) per run ' + ', '.join(
+            f'{v:.3f} +- {e:.3f}' for v, e in ratios) + f'; weighted {mean:.3f} +- {err:.3f} '
+            f'(chi^2 {chi2:.1f} for {len(ratios) - 1} degrees of freedom)')
+    if not a.lone:
+        return 0
     lone = Field(a.lone)
     n = radial_density(lone)
     print('lone colloid: density at r = ' + ', '.join(
@@ -180,17 +259,34 @@ def main(argv=None):
           'within rc of colloid 2 | seen bins, measured density | seen bins, layer-free density '
           '| layering share | Stokes-field sampling / point value |')
     print('|---|---|---|---|---|---|---|---|')
+    summaries = {}
     for l, field_path, drag_path in a.pair:
         l = float(l)
         s = pair_summary(l, Field(field_path), n, measured_torque(drag_path))
+        summaries.setdefault(l, []).append(s)
         st = stokes_sampling(l, n)
         print(f'| {l:g} | {s["measured"]:.4f} +- {s["measured_err"]:.4f} | {s["field"]:.4f} '
               f'({s["field"] / s["measured"]:.3f}) | {s["near_other"]:.4f} | {s["field_seen"]:.4f} '
               f'| {s["layer_free"]:.4f} | {s["layering"] / s["field_seen"]:+.3f} '
               f'(unseen {s["unseen_fraction"]:.3f}) | {st["ratio"]:.3f} |')
-    for l, _, _ in a.pair:
+    for l, runs in summaries.items():
+        if len(runs) > 1:
+            # over independent runs: the field sums against the measured torques, and the layering
+            field = sum(r['field'] for r in runs)
+            measured = sum(r['measured'] for r in runs)
+            error = math.sqrt(sum(r['measured_err'] ** 2 for r in runs))
+            layering = sum(r['layering'] for r in runs) / sum(r['field_seen'] for r in runs)
+            print(f'l = {l:g}, {len(runs)} runs: summed over the fields / measured '
+                  f'{field / measured:.3f} +- {error / measured:.3f}; layering share {layering:+.3f}')
+    axial = AxialField(a.axial[0], float(a.axial[1])) if a.axial else None
+    for l in sorted(summaries):
+        if axial:
+            sm = stokes_sampling(float(l), n, measured=axial)
+            print(f'measured lone flow, l = {l:g}: parts ' + ', '.join(
+                f'{k} {v:+.4f}' for k, v in sm['parts'].items())
+                + f'; total {sm["total"]:.4f}, ratio to the point value {sm["ratio"]:.3f}')
         st = stokes_sampling(float(l), n)
-        print(f'Stokes field, l = {l}: parts ' + ', '.join(f'{k} {v:+.4f}' for k, v in st['parts'].items())
+        print(f'Stokes field, l = {l:g}: parts ' + ', '.join(f'{k} {v:+.4f}' for k, v in st['parts'].items())
               + f'; total {st["total"]:.4f}, uniform rotation at the point spin '
               f'{st["faxen_spin"]:.4f}: {st["point"]:.4f}, ratio {st["ratio"]:.3f}')
     return 0

@@ -78,6 +78,25 @@ r = fa.couette(os.path.join(tmp, 'c'), 8.0)
 check('Couette shear rate', r['rate'], 2.0, 1e-9)
 check('Couette torque ratio', r['T'] / r['T_the'], 0.97, 4 * 0.1 / math.sqrt(n) / t_the)
 check('Couette free spin ratio', r['Omega'] / r['half'], 1.02, 4 * 0.05 / math.sqrt(n))
+check('Couette without a split file: no split values', float('TD' in r), 0.0, 0.0)
+
+# the same flow with the even colloids spun at Omega = 1.5 (not integrated: the same value in
+# every block) and the split file: fixed colloids' dissipative torque 1.01 x theory, the spun
+# ones' dissipative torque 1.01 T_the - 0.96 x 8 pi mu R^3 Omega: B = 0.96
+unit = 8 * math.pi * MU * R ** 3
+write_blocks(os.path.join(tmp, 's.colloid'),
+             [np.zeros(n), 0.97 * t_the + 0.1 * rng.standard_normal(n), 1.5 * np.ones(n),
+              np.ones(n), np.ones(n)])
+write_profile(os.path.join(tmp, 's.profile'), z, [2.0 * z + 0.01, 3 * np.ones_like(z)])
+td_fixed = 1.01 * t_the + 0.05 * rng.standard_normal(n)
+td_spun = 1.01 * t_the - 0.96 * unit * 1.5 + 0.05 * rng.standard_normal(n)
+write_blocks(os.path.join(tmp, 's.split'), [td_fixed, td_spun - 0.3, td_spun])
+r = fa.couette(os.path.join(tmp, 's'), 8.0)
+check('Couette split: fixed colloids\' dissipative torque ratio', r['TD'] / r['T_the'], 1.01,
+      4 * 0.05 / math.sqrt(n) / t_the)
+check('Couette split: spun colloids read as spun', float(r['spun']), 1.0, 0.0)
+check('Couette split: rotational friction B', r['B'], 0.96, 4 * 0.07 / math.sqrt(n) / (unit * 1.5))
+check('Couette split: spun colloids\' total torque column', r['T_even'] - r['TD_even'], -0.3, 1e-9)
 
 # Poiseuille: far profile (rho g - F/V)/(2 mu)(16 - z^2) with mu = 3.7, drag = 1.1 x eq. 22,
 # torque = 0.9 x eq. 22

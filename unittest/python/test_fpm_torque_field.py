@@ -98,6 +98,48 @@ check('Stokes sampling: point spin is Faxen\'s 3 R U / (4 l^2)', far['faxen_spin
       0.75 * R / 64.0, 1e-12)
 check('Stokes sampling, uniform density: the stream makes no torque', far['parts']['stream'], 0.0, 1e-9)
 
+# a ring file written from Stokes flow itself (stream 0.6): the disturbance read back from it is
+# Stokes flow's, inside the rings (bilinear interpolation) and beyond them (the stand-in)
+with tempfile.TemporaryDirectory() as tmp:
+    path = os.path.join(tmp, 'a.axial')
+    stream, width, cx = 0.6, 0.05, 4.0
+    radii = np.arange(width / 2, 3.0, width)
+    axials = np.arange(-3.0 + width / 2, 3.0, width)
+    with open(path, 'w') as f:
+        f.write('# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n'
+                '# Chunk Coord1 Coord2 Ncount density/number vx v_avr v_awphi\n')
+        f.write(f'1000 {len(radii) * len(axials)} 1\n')
+        k = 0
+        for r_ in radii:    # LAMMPS's order does not matter to the reader
+            for a_ in axials:
+                u_, w_ = ft.stokes_disturbance(np.array([[a_, r_, 0.0]]), stream, R)
+                k += 1
+                f.write(f'{k} {r_:.6f} {a_ + cx:.6f} 1 3 {stream + u_[0, 0]:.12g} {u_[0, 1]:.12g} '
+                        f'{w_[0, 2]:.12g}\n')
+    axial = ft.AxialField(path, stream)
+    points = np.array([[0.4, 0.5, -0.3], [-1.2, 0.1, 0.7], [0.0, -1.5, 0.0], [2.0, 0.0, 0.9]])
+    got_u, got_w = axial.disturbance(points)
+    want_u, want_w = ft.stokes_disturbance(points, 1.0, R)
+    check('ring file: disturbance inside the rings', float(np.abs(got_u - want_u).max()), 0.0, 2e-3)
+    check('ring file: spin inside the rings', float(np.abs(got_w - want_w).max()), 0.0, 2e-3)
+    far_point = np.array([[4.0, 0.5, 0.5]])
+    check('ring file: Stokes beyond the rings',
+          float(np.abs(axial.disturbance(far_point)[0] - ft.stokes_disturbance(far_point, 1.0, R)[0]).max()),
+          0.0, 1e-12)
+    # (no fluid within 0.4 of either centre, where the stand-in's step at r = R would be smoothed)
+    hollow = lambda r: np.where(np.asarray(r) > 0.4, ft.BULK_DENSITY, 0.0)  # noqa: E731
+    same = ft.stokes_sampling(1.0, hollow, spacing=0.1, measured=axial)['ratio']
+    check('sampling with the ring file of Stokes flow equals the Stokes sampling', same,
+          ft.stokes_sampling(1.0, hollow, spacing=0.1)['ratio'], 0.005)
+
+# inverse-variance weighting: two equal errors give the plain mean, error / sqrt(2)
+mean, err, chi2 = ft.weighted_mean([1.0, 1.2], [0.1, 0.1])
+check('weighted mean of two', mean, 1.1, 1e-12)
+check('weighted mean: error', err, 0.1 / np.sqrt(2), 1e-12)
+check('weighted mean: chi^2', chi2, 2.0, 1e-12)
+mean, err, _ = ft.weighted_mean([1.0, 2.0], [0.1, 0.2])
+check('weighted mean, unequal errors', mean, (1.0 / 0.01 + 2.0 / 0.04) / (1 / 0.01 + 1 / 0.04), 1e-12)
+
 if failures:
     print(f'{len(failures)} check(s) failed: {failures}')
     sys.exit(1)

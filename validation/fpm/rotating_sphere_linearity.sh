@@ -13,6 +13,6 @@ run() {    # Omega steps
     -var equil 2000 -var steps "$2" -log "log.spin_L8_W$1" -screen none
 }
 run 1 400000 & run 3 200000 & wait
-/usr/bin/python3 "$here/python/fpm_analysis.py" "$out" --torque "L = 8, Omega = -1" spin_L8_W1.torque -1.0 \
-  --torque "L = 8, Omega = -3" spin_L8_W3.torque -3.0 --torque "L = 8, Omega = -6" spin_L8.torque -6.0 \
+/usr/bin/python3 "$here/python/fpm_analysis.py" "$out" --torque "L = 8" spin_L8_W1.torque -1.0 \
+  --torque "L = 8" spin_L8_W3.torque -3.0 --torque "L = 8" spin_L8.torque -6.0 \
   | tee linearity.md
