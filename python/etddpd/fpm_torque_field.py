@@ -24,7 +24,9 @@ import argparse
 import math
 
 import numpy as np
+from scipy.interpolate import RegularGridInterpolator
 
+from .fpm_analysis import batch_mean, read_blocks, two_spheres
 from .lammps_output import read_ave_chunk
 
 # colloid-fluid shear friction of potentials/fpm_colloid_pan2008.in
@@ -124,7 +126,6 @@ class AxialField:
     range less one bin) the Stokes disturbance of radius R stands in."""
 
     def __init__(self, path, stream, R=PAPER_R):
-        from scipy.interpolate import RegularGridInterpolator
         rows = read_ave_chunk(path).data[-1]
         c1, c2 = rows[:, 1], rows[:, 2]
         radial, axial = (c1, c2) if c1.min() >= 0.0 and c1.max() < c2.max() - c2.min() else (c2, c1)
@@ -207,7 +208,6 @@ def pair_summary(l, field, lone_density, measured, min_fraction=0.1):
 
 def measured_torque(drag_path):
     """Mean and batch error of colloid 1's dissipative z torque (column 10 of the .drag file)."""
-    from .fpm_analysis import batch_mean, read_blocks
     return batch_mean(read_blocks(drag_path)[:, 9])
 
 
@@ -222,7 +222,6 @@ def weighted_mean(values, errors):
 def combined_runs(l, g, paths, L=8.0, nfluid=1534):
     """Each two-sphere run's dissipative torque / eq. (23) (fpm_analysis.two_spheres, half the
     difference of the two colloids) and their weighted mean."""
-    from .fpm_analysis import two_spheres
     ratios = []
     for path in paths:
         r = two_spheres(path, L, g, nfluid, l)
