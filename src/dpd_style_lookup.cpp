@@ -1,7 +1,9 @@
 #include "dpd_style_lookup.h"
 
 #include "error.h"
+#include "fix.h"
 #include "force.h"
+#include "modify.h"
 #include "pair.h"
 #include "pair_hybrid.h"
 #include "update.h"
@@ -50,5 +52,16 @@ std::vector<etd::DpdPairInterface *> etd::fix_etd_pair_styles(LAMMPS_NS::LAMMPS 
                     "Fix etd requires pair style dpd/gen or dpd/fpm (alone or in pair "
                     "hybrid/overlay) to supply the {}",
                     friction);
+  // LAMMPS 4 Jul 2026's fix wall/reflect/stochastic records a plane for dump image in an array
+  // only its parent fix wall/reflect allocates, and crashes at its first step (with any
+  // integrator; measured with fix nve). The package's examples use it for thermal walls.
+  if (lmp->num_ver >= 20260704)
+    for (int f = 0; f < lmp->modify->nfix; f++)
+      if (LAMMPS_NS::utils::strmatch(lmp->modify->fix[f]->style, "^wall/reflect/stochastic"))
+        lmp->error->all(FLERR,
+                        "Fix wall/reflect/stochastic ({}) crashes at its first step in this "
+                        "LAMMPS version ({}): use fix wall/reflect with fix wall/thermal/layer "
+                        "for a wall's velocity and temperature (the examples' -var wallbc layer)",
+                        lmp->modify->fix[f]->id, lmp->num_ver);
   return styles;
 }

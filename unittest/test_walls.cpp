@@ -1,5 +1,6 @@
 // fix wall/cylinder/bounce and fix wall/thermal/layer inside LAMMPS: a hand-built crossing,
 // no escape in a driven run, the redrawn layer's statistics, bad input, rank independence.
+#include "lammps.h"
 #include "lammps_fixture.h"
 
 #include <gtest/gtest.h>
@@ -198,6 +199,15 @@ TEST(WallThermalLayer, NoFluidAtomCrossesPlaneWallsInALongCouetteRun)
 // example).
 TEST(WallReflectStochastic, DiagonalSchemeKeepsTheFluidInside)
 {
+  if (Lammps().lmp->num_ver >= 20260704) {
+    // there the stock fix crashes at its first step; fix etd stops before it
+    etdtest::expect_errors({{{"fix reflect fluid wall/reflect/stochastic diffusive 77 zlo -3 1.0 "
+                              "-3 0 0 zhi 3 1.0 3 0 0 units box",
+                              "run 0"},
+                             "crashes at its first step in this LAMMPS version"}},
+                           [](Lammps &l) { couette_cell_setup(l, "diagonal"); });
+    GTEST_SKIP() << "fix wall/reflect/stochastic crashes in this LAMMPS version (refused)";
+  }
   const auto kept = couette_cell(false, 2000, nullptr, "diagonal", true);
   EXPECT_LE(kept.first, 3.0);
   EXPECT_EQ(kept.second, 384);
@@ -207,10 +217,15 @@ TEST(WallReflectStochastic, ImplicitSchemeIsRefused)
 {
   const std::string stochastic = "fix reflect fluid wall/reflect/stochastic diffusive 77 zlo -3 "
                                  "1.0 -3 0 0 zhi 3 1.0 3 0 0 units box";
+  // (where the stock fix crashes, fix etd's preamble refuses it first)
+  const bool stock_fix_crashes = Lammps().lmp->num_ver >= 20260704;
   etdtest::expect_errors({{{stochastic, "run 0"},
-                           "cannot be combined with fix wall/reflect/stochastic (reflect)"}},
+                           stock_fix_crashes
+                               ? "crashes at its first step in this LAMMPS version"
+                               : "cannot be combined with fix wall/reflect/stochastic (reflect)"}},
                          [](Lammps &l) { couette_cell_setup(l, "implicit"); });
-  // the overdamped drift uses the velocity it leaves behind: allowed
+  // the overdamped drift uses the velocity it leaves behind: allowed (where the stock fix works)
+  if (stock_fix_crashes) return;
   Lammps l;
   couette_cell_setup(l, "implicit overdamped yes");
   l.cmd(stochastic);
