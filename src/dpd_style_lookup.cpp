@@ -2,6 +2,7 @@
 
 #include "error.h"
 #include "fix.h"
+#include "lammps_compat.h"
 #include "force.h"
 #include "modify.h"
 #include "pair.h"
@@ -52,10 +53,9 @@ std::vector<etd::DpdPairInterface *> etd::fix_etd_pair_styles(LAMMPS_NS::LAMMPS 
                     "Fix etd requires pair style dpd/gen or dpd/fpm (alone or in pair "
                     "hybrid/overlay) to supply the {}",
                     friction);
-  // LAMMPS 4 Jul 2026's fix wall/reflect/stochastic records a plane for dump image in an array
-  // only its parent fix wall/reflect allocates, and crashes at its first step (with any
-  // integrator; measured with fix nve). The package's examples use it for thermal walls.
-  if (lmp->num_ver >= 20260704)
+  // there fix wall/reflect/stochastic crashes at its first step (with any integrator; measured
+  // with fix nve); the package's examples use it for thermal walls
+  if (lmp->num_ver >= etd::compat::first_version_with_crashing_wall_reflect_stochastic)
     for (int f = 0; f < lmp->modify->nfix; f++)
       if (LAMMPS_NS::utils::strmatch(lmp->modify->fix[f]->style, "^wall/reflect/stochastic"))
         lmp->error->all(FLERR,

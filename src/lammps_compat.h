@@ -25,6 +25,12 @@
 namespace etd {
 namespace compat {
 
+  // Stock fix wall/reflect/stochastic crashes at its first step from this LAMMPS version on (it
+  // records a dump-image plane in an array only its parent fix wall/reflect allocates); seen in
+  // 4 Jul 2026. A run-time number: the plugin may be loaded by a LAMMPS other than the one it
+  // was built against.
+  constexpr int first_version_with_crashing_wall_reflect_stochastic = 20260704;
+
   // A half neighbor list with the default newton setting, as a plain pair style uses.
   template <typename Requestor>
   inline void request_half_list(LAMMPS_NS::Neighbor *neighbor, Requestor *requestor, int instance)
