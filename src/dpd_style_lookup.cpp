@@ -56,12 +56,18 @@ std::vector<etd::DpdPairInterface *> etd::fix_etd_pair_styles(LAMMPS_NS::LAMMPS 
   // there fix wall/reflect/stochastic crashes at its first step (with any integrator; measured
   // with fix nve); the package's examples use it for thermal walls
   if (lmp->num_ver >= etd::compat::first_version_with_crashing_wall_reflect_stochastic)
-    for (int f = 0; f < lmp->modify->nfix; f++)
-      if (LAMMPS_NS::utils::strmatch(lmp->modify->fix[f]->style, "^wall/reflect/stochastic"))
-        lmp->error->all(FLERR,
-                        "Fix wall/reflect/stochastic ({}) crashes at its first step in this "
-                        "LAMMPS version ({}): use fix wall/reflect with fix wall/thermal/layer "
-                        "for a wall's velocity and temperature (the examples' -var wallbc layer)",
-                        lmp->modify->fix[f]->id, lmp->num_ver);
+    if (LAMMPS_NS::Fix *walls = find_fix_style(lmp, "^wall/reflect/stochastic"))
+      lmp->error->all(FLERR,
+                      "Fix wall/reflect/stochastic ({}) crashes at its first step in this "
+                      "LAMMPS version ({}): use fix wall/reflect with fix wall/thermal/layer "
+                      "for a wall's velocity and temperature (the examples' -var wallbc layer)",
+                      walls->id, lmp->num_ver);
   return styles;
+}
+
+LAMMPS_NS::Fix *etd::find_fix_style(LAMMPS_NS::LAMMPS *lmp, const char *pattern)
+{
+  for (int f = 0; f < lmp->modify->nfix; f++)
+    if (LAMMPS_NS::utils::strmatch(lmp->modify->fix[f]->style, pattern)) return lmp->modify->fix[f];
+  return nullptr;
 }

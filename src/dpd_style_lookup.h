@@ -7,6 +7,10 @@
 
 #include <vector>
 
+namespace LAMMPS_NS {
+class Fix;
+}
+
 namespace etd {
 // The pair style if it implements DpdPairInterface, else those of the sub-styles of pair
 // hybrid (and its variants) that do, in the order of the pair_style command; empty if none.
@@ -16,6 +20,9 @@ std::vector<DpdPairInterface *> find_dpd_pair_styles(LAMMPS_NS::LAMMPS *lmp);
 // the package's pair styles found; ERROR if there are none, naming what the scheme takes from
 // them (friction: e.g. "diagonal friction").
 std::vector<DpdPairInterface *> fix_etd_pair_styles(LAMMPS_NS::LAMMPS *lmp, const char *friction);
+
+// The first fix whose style matches the pattern (utils::strmatch), or nullptr.
+LAMMPS_NS::Fix *find_fix_style(LAMMPS_NS::LAMMPS *lmp, const char *pattern);
 }    // namespace etd
 
 #endif

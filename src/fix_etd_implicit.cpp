@@ -162,17 +162,14 @@ void FixETDImplicit::init()
   // velocity the step reversed is put back beyond the wall and is lost later (measured: the
   // sphere-in-Couette example, one atom by step 650). The overdamped drift uses the velocity
   // it leaves in v, so it is not affected.
-  if (!overdamped)
-    for (int f = 0; f < modify->nfix; f++)
-      if (utils::strmatch(modify->fix[f]->style, "^wall/reflect/stochastic"))
-        error->all(FLERR,
-                   "Fix etd scheme implicit cannot be combined with fix wall/reflect/stochastic "
-                   "({}): that fix puts an atom that crossed its wall back along the atom's "
-                   "velocity after the step, which under the implicit friction step is not the "
-                   "velocity the atom travelled with, and atoms are left beyond the wall. Use fix "
-                   "wall/reflect with fix wall/thermal/layer for thermal walls, or fix etd scheme "
-                   "diagonal",
-                   modify->fix[f]->id);
+  if (Fix *walls = overdamped ? nullptr : etd::find_fix_style(lmp, "^wall/reflect/stochastic"))
+    error->all(FLERR,
+               "Fix etd scheme implicit cannot be combined with fix wall/reflect/stochastic ({}): "
+               "that fix puts an atom that crossed its wall back along the atom's velocity after "
+               "the step, which under the implicit friction step is not the velocity the atom "
+               "travelled with, and atoms are left beyond the wall. Use fix wall/reflect with fix "
+               "wall/thermal/layer for thermal walls, or fix etd scheme diagonal",
+               walls->id);
 
   const int ntypes = atom->ntypes;
   pair_table.assign((ntypes + 1) * (ntypes + 1), nullptr);
