@@ -114,6 +114,17 @@ TEST(WallCylinderBounce, NoAtomEntersAnObstacle)
 // A small Couette cell: fluid (n = 4, m = 0.01, kBT = 1) in |z| < 3 between frozen fcc walls
 // in 3 < |z| < 4.5 moving at -+3 along x, a 0.2 thermal layer at each wall; fix etd with the
 // given scheme (the walls' reflecting planes are left to the caller).
+// Diffusive reflection at the cell's wall planes, at the walls' speed and kBT = 1.
+const std::string STOCHASTIC_WALLS = "fix reflect fluid wall/reflect/stochastic diffusive 77 zlo -3 "
+                                     "1.0 -3 0 0 zhi 3 1.0 3 0 0 units box";
+
+// Whether the stock fix wall/reflect/stochastic crashes in this LAMMPS (from 4 Jul 2026 on; fix
+// etd then refuses it: src/lammps_compat.h)
+bool stock_stochastic_walls_crash()
+{
+  return Lammps().lmp->num_ver >= 20260704;
+}
+
 void couette_cell_setup(Lammps &l, const std::string &scheme)
 {
   l.cmds({"units lj",
@@ -164,9 +175,7 @@ std::pair<double, long> couette_cell(bool with_reflect, int steps, double *redra
   Lammps l;
   couette_cell_setup(l, scheme);
   if (with_reflect) l.cmd("fix reflect fluid wall/reflect zlo -3 zhi 3 units box");
-  if (stochastic)
-    l.cmd("fix reflect fluid wall/reflect/stochastic diffusive 77 zlo -3 1.0 -3 0 0 zhi 3 1.0 3 "
-          "0 0 units box");
+  if (stochastic) l.cmd(STOCHASTIC_WALLS);
   l.cmd("run " + std::to_string(steps) + " post no");
   if (redrawn) *redrawn = l.fix_vector("layer", 1);    // kinetic energy the redraws added
   l.cmds({"variable zmax_run equal max(f_zmax_series)", "variable nfluid equal count(fluid)",
@@ -199,11 +208,9 @@ TEST(WallThermalLayer, NoFluidAtomCrossesPlaneWallsInALongCouetteRun)
 // example).
 TEST(WallReflectStochastic, DiagonalSchemeKeepsTheFluidInside)
 {
-  if (Lammps().lmp->num_ver >= 20260704) {
+  if (stock_stochastic_walls_crash()) {
     // there the stock fix crashes at its first step; fix etd stops before it
-    etdtest::expect_errors({{{"fix reflect fluid wall/reflect/stochastic diffusive 77 zlo -3 1.0 "
-                              "-3 0 0 zhi 3 1.0 3 0 0 units box",
-                              "run 0"},
+    etdtest::expect_errors({{{STOCHASTIC_WALLS, "run 0"},
                              "crashes at its first step in this LAMMPS version"}},
                            [](Lammps &l) { couette_cell_setup(l, "diagonal"); });
     GTEST_SKIP() << "fix wall/reflect/stochastic crashes in this LAMMPS version (refused)";
@@ -215,11 +222,9 @@ TEST(WallReflectStochastic, DiagonalSchemeKeepsTheFluidInside)
 
 TEST(WallReflectStochastic, ImplicitSchemeIsRefused)
 {
-  const std::string stochastic = "fix reflect fluid wall/reflect/stochastic diffusive 77 zlo -3 "
-                                 "1.0 -3 0 0 zhi 3 1.0 3 0 0 units box";
   // (where the stock fix crashes, fix etd's preamble refuses it first)
-  const bool stock_fix_crashes = Lammps().lmp->num_ver >= 20260704;
-  etdtest::expect_errors({{{stochastic, "run 0"},
+  const bool stock_fix_crashes = stock_stochastic_walls_crash();
+  etdtest::expect_errors({{{STOCHASTIC_WALLS, "run 0"},
                            stock_fix_crashes
                                ? "crashes at its first step in this LAMMPS version"
                                : "cannot be combined with fix wall/reflect/stochastic (reflect)"}},
@@ -228,7 +233,7 @@ TEST(WallReflectStochastic, ImplicitSchemeIsRefused)
   if (stock_fix_crashes) return;
   Lammps l;
   couette_cell_setup(l, "implicit overdamped yes");
-  l.cmd(stochastic);
+  l.cmd(STOCHASTIC_WALLS);
   EXPECT_NO_THROW(l.cmd("run 0 post no"));
 }
 
