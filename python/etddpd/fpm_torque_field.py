@@ -259,11 +259,12 @@ def main(argv=None):
           '| layering share | Stokes-field sampling / point value |')
     print('|---|---|---|---|---|---|---|---|')
     summaries = {}
+    stokes = {l: stokes_sampling(l, n) for l in sorted({float(l) for l, _, _ in a.pair})}
     for l, field_path, drag_path in a.pair:
         l = float(l)
         s = pair_summary(l, Field(field_path), n, measured_torque(drag_path))
         summaries.setdefault(l, []).append(s)
-        st = stokes_sampling(l, n)
+        st = stokes[l]
         print(f'| {l:g} | {s["measured"]:.4f} +- {s["measured_err"]:.4f} | {s["field"]:.4f} '
               f'({s["field"] / s["measured"]:.3f}) | {s["near_other"]:.4f} | {s["field_seen"]:.4f} '
               f'| {s["layer_free"]:.4f} | {s["layering"] / s["field_seen"]:+.3f} '
@@ -284,7 +285,7 @@ def main(argv=None):
             print(f'measured lone flow, l = {l:g}: parts ' + ', '.join(
                 f'{k} {v:+.4f}' for k, v in sm['parts'].items())
                 + f'; total {sm["total"]:.4f}, ratio to the point value {sm["ratio"]:.3f}')
-        st = stokes_sampling(float(l), n)
+        st = stokes[l]
         print(f'Stokes field, l = {l:g}: parts ' + ', '.join(f'{k} {v:+.4f}' for k, v in st['parts'].items())
               + f'; total {st["total"]:.4f}, uniform rotation at the point spin '
               f'{st["faxen_spin"]:.4f}: {st["point"]:.4f}, ratio {st["ratio"]:.3f}')
