@@ -13,17 +13,11 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 PYTHON_DIR = os.path.join(HERE, '..', '..', 'python')
 sys.path.insert(0, PYTHON_DIR)
+sys.path.insert(0, HERE)
 from etddpd import fpm_analysis as fa  # noqa: E402
+from scriptcheck import check, finish, write_ave_chunk  # noqa: E402
 
 MU, R = fa.PAPER_MU, fa.PAPER_R
-failures = []
-
-
-def check(name, value, expected, tol):
-    ok = abs(value - expected) <= tol
-    print(f'{"ok  " if ok else "FAIL"} {name}: {value:.6g} (expected {expected:.6g} +- {tol:.2g})')
-    if not ok:
-        failures.append(name)
 
 
 def write_blocks(path, columns):
@@ -34,12 +28,9 @@ def write_blocks(path, columns):
 
 
 def write_profile(path, z, cols):
-    with open(path, 'w') as f:
-        f.write('# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n'
-                '# Chunk Coord1 Ncount ...\n')
-        f.write(f'100000 {len(z)} 1000\n')
-        for i, zz in enumerate(z):
-            f.write(f'{i + 1} {zz} 30 ' + ' '.join(f'{c[i]:.10g}' for c in cols) + '\n')
+    write_ave_chunk(path, ['Coord1', 'Ncount', '...'], [(zz, 30, *(c[i] for c in cols))
+                                                         for i, zz in enumerate(z)],
+                    step=100000, total=1000)
 
 
 rng = np.random.default_rng(11)
@@ -155,5 +146,4 @@ check('rotating-sphere dissipative torque', td, -1.0, 4 * 0.1 / math.sqrt(n))
 check('its error', tderr, 0.1 / math.sqrt(n), 0.3 * 0.1 / math.sqrt(n))
 check("eq. 23 torque at the paper's l = 1, u = 0.3349", 8 * math.pi * MU * R ** 3 * 0.3349 * tf, 0.106, 0.001)
 
-print('FAILED: ' + ', '.join(failures) if failures else 'all passed')
-sys.exit(1 if failures else 0)
+finish()

@@ -12,16 +12,9 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, '..', '..', 'python'))
+sys.path.insert(0, HERE)
 from etddpd import fpm_torque_field as ft  # noqa: E402
-
-failures = []
-
-
-def check(name, value, expected, tol):
-    ok = abs(value - expected) <= tol
-    print(f'{"ok  " if ok else "FAIL"} {name}: {value:.6g} (expected {expected:.6g} +- {tol:.2g})')
-    if not ok:
-        failures.append(name)
+from scriptcheck import check, finish, write_ave_chunk  # noqa: E402
 
 
 gamma, d, U, W = ft.GAMMA_S, 0.6, 0.7, 1.3
@@ -70,13 +63,10 @@ with tempfile.TemporaryDirectory() as tmp:
     density = 3.0 * (1 + 0.5 * np.sin(3 * xyz[:, 1])) * (np.linalg.norm(xyz, axis=1) > 0.3)
     velocity = np.stack([0.6 + 0.4 * xyz[:, 1], 0.1 * xyz[:, 0], 0 * xyz[:, 0]], axis=1)
     spin = np.stack([0 * xyz[:, 0], 0 * xyz[:, 0], -0.2 + 0.1 * xyz[:, 0]], axis=1)
-    with open(path, 'w') as f:
-        f.write('# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n'
-                '# Chunk Coord1 Coord2 Coord3 Ncount density/number vx vy vz c_spin[1] c_spin[2] c_spin[3]\n')
-        f.write(f'1000 {len(xyz)} 1\n')
-        for k, (p, n_, v, s) in enumerate(zip(xyz + centre, density, velocity, spin)):
-            f.write(f'{k + 1} {p[0]:.6f} {p[1]:.6f} {p[2]:.6f} {n_ * spacing ** 3:.8g} {n_:.10g} '
-                    + ' '.join(f'{c:.10g}' for c in (*v, *s)) + '\n')
+    write_ave_chunk(path, ['Coord1', 'Coord2', 'Coord3', 'Ncount', 'density/number', 'vx', 'vy',
+                           'vz', 'c_spin[1]', 'c_spin[2]', 'c_spin[3]'],
+                    [(*p, n_ * spacing ** 3, n_, *v, *s_)
+                     for p, n_, v, s_ in zip(xyz + centre, density, velocity, spin)])
     field = ft.Field(path)
     direct = float(np.sum(ft.shear_torque(xyz, velocity, spin)[:, 2] * density * spacing ** 3))
     check('field sum equals the sum over atoms at the bins', field.torque(), direct, 1e-9 * max(1, abs(direct)))
@@ -105,17 +95,13 @@ with tempfile.TemporaryDirectory() as tmp:
     stream, width, cx = 0.6, 0.05, 4.0
     radii = np.arange(width / 2, 3.0, width)
     axials = np.arange(-3.0 + width / 2, 3.0, width)
-    with open(path, 'w') as f:
-        f.write('# Chunk-averaged data\n# Timestep Number-of-chunks Total-count\n'
-                '# Chunk Coord1 Coord2 Ncount density/number vx v_avr v_awphi\n')
-        f.write(f'1000 {len(radii) * len(axials)} 1\n')
-        k = 0
-        for r_ in radii:    # LAMMPS's order does not matter to the reader
-            for a_ in axials:
-                u_, w_ = ft.stokes_disturbance(np.array([[a_, r_, 0.0]]), stream, R)
-                k += 1
-                f.write(f'{k} {r_:.6f} {a_ + cx:.6f} 1 3 {stream + u_[0, 0]:.12g} {u_[0, 1]:.12g} '
-                        f'{w_[0, 2]:.12g}\n')
+    rows = []
+    for r_ in radii:    # LAMMPS's order does not matter to the reader
+        for a_ in axials:
+            u_, w_ = ft.stokes_disturbance(np.array([[a_, r_, 0.0]]), stream, R)
+            rows.append((r_, a_ + cx, 1, 3, stream + u_[0, 0], u_[0, 1], w_[0, 2]))
+    write_ave_chunk(path, ['Coord1', 'Coord2', 'Ncount', 'density/number', 'vx', 'v_avr', 'v_awphi'],
+                    rows)
     axial = ft.AxialField(path, stream)
     points = np.array([[0.4, 0.5, -0.3], [-1.2, 0.1, 0.7], [0.0, -1.5, 0.0], [2.0, 0.0, 0.9]])
     got_u, got_w = axial.disturbance(points)
@@ -140,7 +126,4 @@ check('weighted mean: chi^2', chi2, 2.0, 1e-12)
 mean, err, _ = ft.weighted_mean([1.0, 2.0], [0.1, 0.2])
 check('weighted mean, unequal errors', mean, (1.0 / 0.01 + 2.0 / 0.04) / (1 / 0.01 + 1 / 0.04), 1e-12)
 
-if failures:
-    print(f'{len(failures)} check(s) failed: {failures}')
-    sys.exit(1)
-print('all checks passed')
+finish()
