@@ -291,6 +291,35 @@ TEST(PairNoise, SymmetricKeyedAndIndependent)
   EXPECT_NE(a.gaussian(7, 3, 100), matrix.gaussian(7, 3, 100));
 }
 
+TEST(PairNoise, LargeAtomIdsStaySymmetricAndDistinct)
+{
+  // IDs of 2^32 and more (64-bit LAMMPS IDs) do not fit the packed counter word: they must still
+  // give one draw per pair, the same from both ends, and not repeat a small-ID pair's draw
+  etd::PairNoise a(12345);
+  const std::int64_t big = (std::int64_t(1) << 32) + 3;
+  EXPECT_EQ(a.gaussian(big, 7, 100), a.gaussian(7, big, 100));
+  EXPECT_NE(a.gaussian(big, 7, 100), a.gaussian(big + 1, 7, 100));
+  EXPECT_NE(a.gaussian(big, 7, 100), a.gaussian(big, 7, 101));
+  EXPECT_NE(a.gaussian(big, 7, 100), a.gaussian(3, 7, 100));
+  // the packed word keeps both IDs: (1, 2^31) and (2^31, 1) are one pair, (1, 2) another
+  EXPECT_EQ(a.gaussian(1, std::int64_t(1) << 31, 5), a.gaussian(std::int64_t(1) << 31, 1, 5));
+  EXPECT_NE(a.gaussian(1, std::int64_t(1) << 31, 5), a.gaussian(1, 2, 5));
+  // groups of four start with the scalar draw on either generator (dpd/fpm with zero shear
+  // friction is dpd/gen): packed IDs, a large ID, a timestep beyond the packed 2^48
+  const std::int64_t late = std::int64_t(1) << 50;
+  const std::int64_t cases[3][3] = {{3, 7, 100}, {big, 7, 100}, {3, 7, late}};
+  for (const auto &c : cases) {
+    double theta[4];
+    a.gaussians4(c[0], c[1], c[2], 0, theta);
+    EXPECT_EQ(theta[0], a.gaussian(c[1], c[0], c[2]));
+    EXPECT_NE(theta[1], theta[0]);
+    double other_group[4];
+    a.gaussians4(c[0], c[1], c[2], 1, other_group);
+    EXPECT_NE(other_group[0], theta[0]);
+  }
+  EXPECT_NE(a.gaussian(3, 7, late), a.gaussian(3, 7, late + 1));
+}
+
 TEST(PairNoise, UnitGaussianMoments)
 {
   // 400k draws: standard errors of mean, variance and kurtosis are 0.0016, 0.0022 and 0.0077

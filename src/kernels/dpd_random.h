@@ -1,8 +1,13 @@
-// ETD-DPD: counter-based pair noise from Random123 (Philox4x64-10).
+// ETD-DPD: counter-based pair noise from Random123 (Philox2x64-10, Philox4x64-10).
 //
 // Each draw is a pure function of (seed, stream, smaller atom ID, larger atom ID, timestep):
 // theta_ij = theta_ji on every rank, independent of decomposition, neighbour order, newton
 // setting and restarts. Nothing is stored between calls.
+//
+// Draws come from Philox2x64-10, with both atom IDs packed in one counter word: half the
+// multiplications of Philox4x64-10 at the same number of rounds, which is a quarter of the
+// cost of a pair's noise in the pair loop (bench/README.md). Arguments that do not pack
+// (PairNoise::packs) take Philox4x64-10.
 #ifndef ETD_DPD_RANDOM_H
 #define ETD_DPD_RANDOM_H
 
@@ -12,6 +17,12 @@
 #include <cstdint>
 
 namespace etd {
+
+// Philox2x64's key is one word: the seed and the stream share it (the stream in the low byte).
+inline std::uint64_t scalar_noise_key(std::uint64_t seed, std::uint64_t stream)
+{
+  return (seed << 8) | (stream & 0xff);
+}
 
 // Streams keep the users of one seed apart (pair noise, FPM matrix noise, integrator noise,
 // wall-layer velocities).
@@ -24,22 +35,31 @@ enum class NoiseStream : std::uint64_t {
 
 class PairNoise {
  public:
-  using Generator = r123::Philox4x64;
+  using Generator = r123::Philox4x64;          // arguments that do not pack
+  using ScalarGenerator = r123::Philox2x64;    // the rest: nearly every draw
 
   PairNoise(std::uint64_t seed = 0, NoiseStream stream = NoiseStream::PairScalar)
   {
     key_ = {{seed, static_cast<std::uint64_t>(stream)}};
+    scalar_key_ = {{scalar_noise_key(seed, static_cast<std::uint64_t>(stream))}};
   }
 
   // Four independent unit Gaussians for pair (i, j) at a timestep, drawn like gaussian() (so
-  // with group 0 the first one is gaussian()'s theta_ij); 'group' selects further, disjoint
-  // groups of four (each group owns 2^32 Philox blocks).
+  // with group 0 the first one is gaussian()'s theta_ij); 'group' (0-255) selects further,
+  // disjoint groups of four.
   void gaussians4(std::int64_t tag_i, std::int64_t tag_j, std::int64_t timestep,
                   std::uint64_t group, double out[4]) const
   {
-    BlockEngine words(*this, tag_i, tag_j, timestep, group << 32);
     boost::random::normal_distribution<double> normal;
-    for (int k = 0; k < 4; k++) out[k] = normal(words);
+    const std::uint64_t lo = static_cast<std::uint64_t>(tag_i < tag_j ? tag_i : tag_j);
+    const std::uint64_t hi = static_cast<std::uint64_t>(tag_i < tag_j ? tag_j : tag_i);
+    if (packs(hi, timestep, group)) {
+      ScalarEngine words(scalar_key_, lo | (hi << 32), packed_time(timestep, group));
+      for (int k = 0; k < 4; k++) out[k] = normal(words);
+    } else {
+      BlockEngine words(*this, tag_i, tag_j, timestep, group << 32);
+      for (int k = 0; k < 4; k++) out[k] = normal(words);
+    }
   }
 
   // One unit Gaussian for pair (i, j): the scalar DPD noise theta_ij. Boost.Random's ziggurat
@@ -48,9 +68,58 @@ class PairNoise {
   // function of (seed, stream, pair, timestep).
   double gaussian(std::int64_t tag_i, std::int64_t tag_j, std::int64_t timestep) const
   {
+    boost::random::normal_distribution<double> normal;
+    const std::uint64_t lo = static_cast<std::uint64_t>(tag_i < tag_j ? tag_i : tag_j);
+    const std::uint64_t hi = static_cast<std::uint64_t>(tag_i < tag_j ? tag_j : tag_i);
+    if (packs(hi, timestep, 0)) {
+      ScalarEngine words(scalar_key_, lo | (hi << 32), packed_time(timestep, 0));
+      return normal(words);
+    }
     BlockEngine words(*this, tag_i, tag_j, timestep);
-    return boost::random::normal_distribution<double>()(words);
+    return normal(words);
   }
+
+  // Philox2x64's counter holds (smaller ID | larger ID << 32, timestep | group << 48 | block <<
+  // 56): IDs below 2^32, timesteps below 2^48 and groups below 256 fit; anything else (LAMMPS
+  // built with 64-bit IDs and more than 4e9 atoms) takes Philox4x64, whose counter has a word
+  // for each. Either way a draw is a pure function of its arguments.
+  static bool packs(std::uint64_t larger_id, std::int64_t timestep, std::uint64_t group)
+  {
+    return (larger_id >> 32) == 0 && timestep >= 0 && (timestep >> 48) == 0 && group < 256;
+  }
+  static std::uint64_t packed_time(std::int64_t timestep, std::uint64_t group)
+  {
+    return static_cast<std::uint64_t>(timestep) | (group << 48);
+  }
+
+  // Philox2x64 blocks for one packed pair and timestep, as a uniform random bit generator; the
+  // block number sits in the top byte of the timestep word (a draw needing more than 256 blocks,
+  // 512 ziggurat tries, would wrap; the chance is far below 1e-300).
+  class ScalarEngine {
+   public:
+    using result_type = std::uint64_t;
+    ScalarEngine(const ScalarGenerator::key_type &key, std::uint64_t pair, std::uint64_t timestep) :
+        key_(key), counter_{{pair, timestep}}
+    {
+    }
+    static constexpr result_type min() { return 0; }
+    static constexpr result_type max() { return ~result_type(0); }
+    result_type operator()()
+    {
+      if (used_ == 2) {
+        words_ = ScalarGenerator()(counter_, key_);
+        counter_.v[1] += std::uint64_t(1) << 56;
+        used_ = 0;
+      }
+      return words_.v[used_++];
+    }
+
+   private:
+    const ScalarGenerator::key_type &key_;
+    ScalarGenerator::ctr_type counter_;
+    ScalarGenerator::ctr_type words_{};
+    int used_ = 2;
+  };
 
   // The words of successive Philox blocks of one pair and timestep as a uniform random bit
   // generator (what C++ and Boost distributions consume).
@@ -93,6 +162,7 @@ class PairNoise {
   }
 
   Generator::key_type key_;
+  ScalarGenerator::key_type scalar_key_;
 };
 
 }    // namespace etd
