@@ -478,19 +478,32 @@ void FixETDImplicit::build_pairs()
     return false;
   };
   int fixed_partner = 0;
+  const double *xflat = nlocal + atom->nghost > 0 ? x[0] : nullptr;    // rows at 3 j
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
+    const int jnum = list->numneigh[i];
     const bool i_mobile = mask[i] & groupbit;
-    const double xi0 = x[i][0], xi1 = x[i][1], xi2 = x[i][2];
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j_bits = jlist[jj];
+    const double xi0 = xflat[3 * i], xi1 = xflat[3 * i + 1], xi2 = xflat[3 * i + 2];
+    // about half of the list lies in its skin: rejected by distance alone in a first pass
+    // without a branch per neighbour (as in dpd/gen's force loop), before any of the per-pair
+    // lookups below
+    if (static_cast<int>(work.close.size()) < jnum) work.close.resize(jnum);
+    int *close = work.close.data();
+    int nclose = 0;
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double *xj = xflat + 3 * j;
+      const double dx = xi0 - xj[0], dy = xi1 - xj[1], dz = xi2 - xj[2];
+      close[nclose] = jlist[jj];
+      nclose += dx * dx + dy * dy + dz * dz < friction_cutsq_max;
+    }
+    for (int jj = 0; jj < nclose; jj++) {
+      const int j_bits = close[jj];
       const int j = j_bits & NEIGHMASK;
-      // about half of the list lies in its skin: rejected by distance alone, before any of the
-      // per-pair lookups below
-      const double d[3] = {xi0 - x[j][0], xi1 - x[j][1], xi2 - x[j][2]};
+      const double *xj = xflat + 3 * j;
+      const double d[3] = {xi0 - xj[0], xi1 - xj[1], xi2 - xj[2]};
       const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-      if (rsq >= friction_cutsq_max) continue;
       const double factor = special_lj[(j_bits >> SBBITS) & 3];
       if (factor == 0.0) continue;
       int partner = j;

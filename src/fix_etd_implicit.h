@@ -123,6 +123,7 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
     std::vector<double> ghost_image;    // per ghost: its count of box vectors (pbc) from its owner
     std::vector<double> mean, gmean;    // record_split()
     std::vector<double> lead;    // post_integrate(): how far the next friction step moves each atom
+    std::vector<int> close;      // build_pairs(): one atom's neighbours within the friction cutoff
     etd::FrictionSolveWorkspace solve;
   } work;
 
