@@ -14,6 +14,8 @@
 // (friction_operator.h).
 #include "fix_etd_implicit.h"
 
+#include "close_neighbors.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "compute.h"
@@ -485,19 +487,12 @@ void FixETDImplicit::build_pairs()
     const int jnum = list->numneigh[i];
     const bool i_mobile = mask[i] & groupbit;
     const double xi0 = xflat[3 * i], xi1 = xflat[3 * i + 1], xi2 = xflat[3 * i + 2];
-    // about half of the list lies in its skin: rejected by distance alone in a first pass
-    // without a branch per neighbour (as in dpd/gen's force loop), before any of the per-pair
-    // lookups below
-    if (static_cast<int>(work.close.size()) < jnum) work.close.resize(jnum);
-    int *close = work.close.data();
-    int nclose = 0;
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const double *xj = xflat + 3 * j;
-      const double dx = xi0 - xj[0], dy = xi1 - xj[1], dz = xi2 - xj[2];
-      close[nclose] = jlist[jj];
-      nclose += dx * dx + dy * dy + dz * dz < friction_cutsq_max;
-    }
+    // about half of the list lies in its skin: rejected by distance alone, before any of the
+    // per-pair lookups below (close_neighbors.h)
+    const int nclose = etd::gather_close_neighbors(
+        jlist, jnum, NEIGHMASK, xflat, xi0, xi1, xi2,
+        [&](int, double rsq) { return rsq < friction_cutsq_max; }, work.close);
+    const int *close = work.close.data();
     for (int jj = 0; jj < nclose; jj++) {
       const int j_bits = close[jj];
       const int j = j_bits & NEIGHMASK;

@@ -12,6 +12,8 @@
 #include "dpd_random.h"
 #include "pair.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class PairDPDBase : public Pair, public etd::DpdPairInterface {
@@ -55,6 +57,7 @@ class PairDPDBase : public Pair, public etd::DpdPairInterface {
   double temperature, cut_global;
   int seed;
   etd::PairNoise noise;
+  std::vector<int> close_neighbors;    // the force loop's scratch: one atom's neighbours within rc
   double **cut;    // cutoff per type pair (upper triangle as set, mirrored in init_one)
 
   bool want_friction, want_split;

@@ -1,6 +1,8 @@
 // ETD-DPD: pair_style dpd/fpm. Thin LAMMPS adapter over fpm_kernel.h and dpd_random.h.
 #include "pair_dpd_fpm.h"
 
+#include "close_neighbors.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
@@ -188,6 +190,8 @@ template <int EVFLAG, int EXTRAS, int DISSIPATIVE> void PairDPDFPM::eval()
   const int *ilist = list->ilist;
   const int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
+  if (inum == 0) return;    // (x may be unallocated on a rank without atoms)
+  const double *xflat = x[0];    // LAMMPS's rows are contiguous: atom j's at 3 j
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
@@ -204,14 +208,20 @@ template <int EVFLAG, int EXTRAS, int DISSIPATIVE> void PairDPDFPM::eval()
     double fi[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0};
     double gi[3] = {0.0, 0.0, 0.0}, gri[3] = {0.0, 0.0, 0.0};
 
-    for (int jj = 0; jj < jnum; jj++) {
-      int j = jlist[jj];
+    // the neighbours within the cutoff first (close_neighbors.h), then the work on those only
+    const int nclose = etd::gather_close_neighbors(
+        jlist, jnum, NEIGHMASK, xflat, xi[0], xi[1], xi[2],
+        [&](int j, double rsq) { return rsq < cutsqi[type[j]]; }, close_neighbors);
+    const int *close = close_neighbors.data();
+
+    for (int jj = 0; jj < nclose; jj++) {
+      int j = close[jj];
       const double factor = special_lj[sbmask(j)];
       j &= NEIGHMASK;
-      const double del[3] = {xi[0] - x[j][0], xi[1] - x[j][1], xi[2] - x[j][2]};
+      const double *xj = xflat + 3 * j;
+      const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
       const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
       const int jtype = type[j];
-      if (rsq >= cutsqi[jtype]) continue;
       const double r = std::sqrt(rsq);
       if (r < MIN_DISTANCE) continue;
       const etd::FpmCoefficients &c = crow[jtype];

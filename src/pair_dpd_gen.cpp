@@ -1,6 +1,8 @@
 // ETD-DPD: pair_style dpd/gen. Thin LAMMPS adapter over dpd_kernel.h and dpd_random.h.
 #include "pair_dpd_gen.h"
 
+#include "close_neighbors.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
@@ -242,24 +244,11 @@ template <int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE> void PairDPDGen:
     double fxi = 0.0, fyi = 0.0, fzi = 0.0;
     double gxi = 0.0, gyi = 0.0, gzi = 0.0;    // atom i's diagonal friction, kept in registers
 
-    // First pass: the neighbours within the cutoff, without a branch per neighbour (about half
-    // of a list with a skin of 0.3 lies beyond rc, and a mispredicted branch per such pair
-    // costs more than the test); the second pass does the work on those only.
-    if (static_cast<int>(close_neighbors.size()) < jnum) close_neighbors.resize(jnum);
-    int *close = close_neighbors.data();
-    int nclose = 0;
-    for (int jj = 0; jj < jnum; jj++) {
-      const int jword = jlist[jj];
-      const int j = jword & NEIGHMASK;
-      const double *xj = xflat + 3 * j;
-      const double delx = xi - xj[0];
-      const double dely = yi - xj[1];
-      const double delz = zi - xj[2];
-      const double rsq = delx * delx + dely * dely + delz * delz;
-      close[nclose] = jword;
-      nclose += rsq < cutsqi[type[j]];
-    }
-
+    // the neighbours within the cutoff first (close_neighbors.h), then the work on those only
+    const int nclose = etd::gather_close_neighbors(
+        jlist, jnum, NEIGHMASK, xflat, xi, yi, zi,
+        [&](int j, double rsq) { return rsq < cutsqi[type[j]]; }, close_neighbors);
+    const int *close = close_neighbors.data();
     for (int jj = 0; jj < nclose; jj++) {
       int j = close[jj];
       const double factor = special_lj[sbmask(j)];

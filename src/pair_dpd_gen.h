@@ -31,7 +31,6 @@ class PairDPDGen : public PairDPDBase {
 
   std::vector<etd::PairCoefficients> coeffs;    // (ntypes+1)^2, filled by init_one
   int stride;
-  std::vector<int> close_neighbors;    // eval's scratch: one atom's neighbours within the cutoff
 
   void allocate() override;
   void write_type_pair(FILE *, int, int) override;
