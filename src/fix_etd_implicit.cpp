@@ -558,7 +558,26 @@ void FixETDImplicit::build_pairs()
   neighbor_safety.largest_displacements(lmp, groupbit, local + 1);
   etd::NeighborSafety::reduce_with_flag(local, global, world);
   any_fixed_partner = global[0] > 0.0;
-  neighbor_safety.count_if_outrun(lmp, global + 1);
+  // where two displacements add up to more than the skin, whether a pair is in fact missing
+  if (global[1] + global[2] > neighbor->skin) {
+    // a type pair's friction cutoff, 0 where the friction step has no pairs of those types
+    auto friction_cutoff = [this, ntypes1](int itype, int jtype) {
+      const etd::PairCoefficients *c = pair_table[itype * ntypes1 + jtype];
+      if (c) return c->gamma != 0.0 ? c->rc_d : 0.0;
+      const etd::FpmCoefficients *fc = fpm_table[itype * ntypes1 + jtype];
+      return fc ? fc->rc : 0.0;
+    };
+    const long missed = neighbor_safety.missed_pairs(lmp, groupbit, global + 1, friction_cutoff);
+    if (missed > 0)
+      error->all(FLERR,
+                 "Fix {}: {} pair(s) within the friction cutoff missing from the neighbor list "
+                 "at step {}: atoms moved up to {:.3g} since it was built, and two of them {:.3g} "
+                 "together, more than the skin {}; use a larger skin (neighbor command; at least "
+                 "{:.2g} here) or a smaller timestep",
+                 id, missed, update->ntimestep, global[1], global[1] + global[2], neighbor->skin,
+                 1.2 * (global[1] + global[2]));
+    if (missed < 0) neighbor_safety.count_if_outrun(lmp, global + 1);
+  }
 }
 
 // One dpd/fpm pair (friction_operator.h): its geometry and its random force on i (without the

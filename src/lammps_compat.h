@@ -8,6 +8,7 @@
 #define ETD_LAMMPS_COMPAT_H
 
 #include "comm.h"
+#include "domain.h"
 #include "fix.h"
 #include "neigh_request.h"
 #include "neighbor.h"
@@ -17,6 +18,9 @@
 #endif
 #ifndef ETD_LAMMPS_HAS_ADD_REQUEST
 #define ETD_LAMMPS_HAS_ADD_REQUEST (ETD_LAMMPS_VERSION >= 20220504)
+#endif
+#ifndef ETD_LAMMPS_HAS_CHECKED_MINIMUM_IMAGE
+#define ETD_LAMMPS_HAS_CHECKED_MINIMUM_IMAGE (ETD_LAMMPS_VERSION >= 20230802)
 #endif
 #ifndef ETD_LAMMPS_HAS_GENERIC_COMM
 #define ETD_LAMMPS_HAS_GENERIC_COMM (ETD_LAMMPS_VERSION >= 20220623)
@@ -73,6 +77,16 @@ namespace compat {
 #endif
   }
 
+  // The minimum-image convention for a separation (newer LAMMPS takes the caller's file and
+  // line for its error on atoms too far apart).
+  inline void minimum_image(LAMMPS_NS::Domain *domain, double delta[3])
+  {
+#if ETD_LAMMPS_HAS_CHECKED_MINIMUM_IMAGE
+    domain->minimum_image(FLERR, delta[0], delta[1], delta[2]);
+#else
+    domain->minimum_image(delta[0], delta[1], delta[2]);
+#endif
+  }
   inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
   {
 #if ETD_LAMMPS_HAS_GENERIC_COMM

@@ -1,8 +1,11 @@
 // ETD-DPD: fix etd and LAMMPS's neighbor-list settings (neighbor_safety.h).
 #include "neighbor_safety.h"
 
+#include "lammps_compat.h"
+
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix.h"
 #include "neighbor.h"
@@ -136,6 +139,66 @@ void NeighborSafety::reduce_with_flag(const double local[3], double global[3], M
 void NeighborSafety::count_if_outrun(LAMMPS *lmp, const double top[2])
 {
   if (top[0] + top[1] > lmp->neighbor->skin) outruns++;
+}
+
+long NeighborSafety::missed_pairs(LAMMPS *lmp, int groupbit, const double top[2],
+                                  const std::function<double(int, int)> &cutoff_of,
+                                  int max_checked)
+{
+  // the same on every rank: the early returns stay collective
+  if (lmp->neighbor->exclude || lmp->atom->molecular) return -1;
+  const int nlocal = lmp->atom->nlocal;
+  int unrecorded = static_cast<int>(build_positions.size()) != 3 * nlocal, any_unrecorded = 0;
+  MPI_Allreduce(&unrecorded, &any_unrecorded, 1, MPI_INT, MPI_MAX, lmp->world);
+  if (any_unrecorded) return -1;
+  constexpr int values = 7;    // per qualifying atom: position now, at the build, type
+  const int *type = lmp->atom->type;
+  const double threshold = lmp->neighbor->skin - top[0];
+  double **x = lmp->atom->x;
+  const int *mask = lmp->atom->mask;
+  // per qualifying atom: its position now and where the list was built
+  std::vector<double> mine;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double dsq = 0.0;
+    for (int k = 0; k < 3; k++) {
+      const double d = x[i][k] - build_positions[3 * i + k];
+      dsq += d * d;
+    }
+    if (dsq <= threshold * threshold) continue;
+    for (int k = 0; k < 3; k++) mine.push_back(x[i][k]);
+    for (int k = 0; k < 3; k++) mine.push_back(build_positions[3 * i + k]);
+    mine.push_back(type[i]);
+  }
+  const int nprocs = lmp->comm->nprocs;
+  int count = static_cast<int>(mine.size());
+  std::vector<int> counts(nprocs), offsets(nprocs, 0);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, lmp->world);
+  long total = 0;
+  for (int p = 0; p < nprocs; p++) {
+    offsets[p] = static_cast<int>(total);
+    total += counts[p];
+  }
+  if (total / values > max_checked) return -1;
+  std::vector<double> all(total);
+  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+                 MPI_DOUBLE, lmp->world);
+  const double reach = lmp->neighbor->cutneighmax;
+  long missed = 0;
+  const long n = total / values;
+  for (long a = 0; a < n; a++)
+    for (long b = a + 1; b < n; b++) {
+      const double *pa = &all[values * a], *pb = &all[values * b];
+      const double cutoff = cutoff_of(static_cast<int>(pa[6]), static_cast<int>(pb[6]));
+      if (cutoff <= 0.0) continue;
+      double now[3] = {pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]};
+      compat::minimum_image(lmp->domain, now);
+      if (now[0] * now[0] + now[1] * now[1] + now[2] * now[2] >= cutoff * cutoff) continue;
+      double then[3] = {pa[3] - pb[3], pa[4] - pb[4], pa[5] - pb[5]};
+      compat::minimum_image(lmp->domain, then);
+      if (then[0] * then[0] + then[1] * then[1] + then[2] * then[2] >= reach * reach) missed++;
+    }
+  return missed;
 }
 
 void NeighborSafety::end_run(LAMMPS *lmp, const char *fix_id) const

@@ -10,9 +10,11 @@
 //  - during the run (implicit scheme): its friction step works at half-drifted positions,
 //    half a step beyond where LAMMPS checked the list, so the fix asks for a rebuild one step
 //    early where two atoms could reach each other unlisted there;
-//  - end of run: a WARNING where the run had dangerous builds (LAMMPS's count), or where the
-//    implicit scheme's friction step, taken at half-drifted positions, found an atom more than
-//    half the skin from where the list was built.
+//  - at each friction step where two atoms' displacements add up to more than the skin
+//    (implicit scheme): an ERROR if a pair within the cutoff is in fact missing from the list
+//    (checked exactly among the few atoms that moved far enough to take part in one);
+//  - end of run: a WARNING where the run had dangerous builds (LAMMPS's count), or friction
+//    steps where too many atoms had moved far for that check.
 #ifndef ETD_NEIGHBOR_SAFETY_H
 #define ETD_NEIGHBOR_SAFETY_H
 
@@ -20,6 +22,7 @@
 
 #include <mpi.h>
 
+#include <functional>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -64,6 +67,16 @@ class NeighborSafety {
   // LAMMPS's own test (Neighbor::check_distance): two atoms may have come within the cutoff
   // unlisted once their two largest displacements add up to more than the skin; counted.
   void count_if_outrun(LAMMPS_NS::LAMMPS *lmp, const double top[2]);
+  // Where that test fires, whether it happened: the pairs of the group's atoms now closer than
+  // their types' cutoff (cutoff_of(itype, jtype), 0 for pairs the caller does not use) that
+  // were farther apart than the list's reach (neighbor->cutneighmax) when it was built, so are
+  // missing from it. Only atoms displaced by more than skin - top[0] can form one (the other's
+  // displacement is at most top[0]); they are gathered from all ranks and every pair of them
+  // is checked under the minimum-image convention. Returns that count, or -1 where it cannot
+  // tell: more than max_checked atoms qualify, or the list leaves pairs out on purpose
+  // (neigh_modify exclude, special bonds of a molecular system). Collective.
+  long missed_pairs(LAMMPS_NS::LAMMPS *lmp, int groupbit, const double top[2],
+                    const std::function<double(int, int)> &cutoff_of, int max_checked = 4096);
   // post_run(): the WARNING, once, from rank 0
   void end_run(LAMMPS_NS::LAMMPS *lmp, const char *fix_id) const;
 

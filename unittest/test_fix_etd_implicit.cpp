@@ -505,21 +505,19 @@ TEST(FixEtdImplicit, RefusesNeighborSettingsThatLetAtomsOutrunTheSkin)
   }
 }
 
-// A run in which LAMMPS counted dangerous builds, or in which the friction step found atoms
-// that could have reached each other unlisted, ends with a WARNING that says so; a run with a
+// A run in which LAMMPS counted dangerous builds ends with a WARNING that says so; a run with a
 // skin wide enough for the step ends without one. The implicit scheme asks for a rebuild one
 // step early where its next friction step would take an atom beyond half the skin, so at a
 // skin of 0.6 (atoms move up to about 0.13 a step here) it neither outruns its list nor has
-// dangerous builds; at 0.02 nothing can help and it says so. The diagonal scheme (no early
-// rebuilds) shows LAMMPS's own count.
+// dangerous builds. The diagonal scheme (no early rebuilds) at 0.02 shows LAMMPS's own count.
+// (The implicit scheme at 0.02 stops: MissingPairIsAnError below.)
 TEST(FixEtdImplicit, RunWithDangerousBuildsEndsWithAWarning)
 {
   struct Case {
     std::string fix, skin;
     bool warned;
   };
-  for (const Case &c : {Case{"etd scheme implicit", "0.02", true},
-                        Case{"etd scheme implicit", "0.6", false}, Case{"etd", "0.02", true}}) {
+  for (const Case &c : {Case{"etd scheme implicit", "0.6", false}, Case{"etd", "0.02", true}}) {
     const std::string log = etdtest::work_file("etd_implicit_danger_np" +
                                                std::to_string(etdtest::world_size()) + ".log");
     bool dangerous =
@@ -540,5 +538,52 @@ TEST(FixEtdImplicit, RunWithDangerousBuildsEndsWithAWarning)
     EXPECT_EQ(warned, c.warned) << c.fix << ", skin " << c.skin;
     if (c.fix == "etd") EXPECT_TRUE(dangerous) << "the diagonal scheme at skin 0.02";
     if (!c.warned) EXPECT_FALSE(dangerous) << c.fix << ", skin " << c.skin;
+  }
+}
+
+// Two atoms and a friction step half a drift after the list was built (neighbor_safety.h): at
+// 1.35 apart they are beyond the list's reach (rc 1 + skin 0.3); closing at 40 + 40 they are
+// 0.95 apart at the first friction step (0.2 each in half a step of 0.01), within the cutoff
+// but unlisted: the run stops with an ERROR naming the skin. Moving apart at the same speeds,
+// their displacements add up to more than the skin just the same, but no pair can be missing:
+// the run goes on, and ends without a warning.
+void two_fast_atoms(Lammps &l, double speed)
+{
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "region box block 0 10 0 10 0 10",
+          "create_box 1 box", "create_atoms 1 single 4.325 5 5", "create_atoms 1 single 5.675 5 5",
+          "mass 1 1.0", "pair_style dpd/gen 1.0 1.0 555", "pair_coeff 1 1 18.75 4.5 0.5",
+          "neighbor 0.3 bin", "group first id 1", "group second id 2",
+          "velocity first set " + std::to_string(speed) + " 0 0",
+          "velocity second set " + std::to_string(-speed) + " 0 0", "timestep 0.01",
+          "fix 1 all etd scheme implicit"});
+}
+
+TEST(FixEtdImplicit, MissingPairIsAnError)
+{
+  {
+    Lammps l;
+    two_fast_atoms(l, 40.0);
+    const std::string message = l.error_of("run 1");
+    EXPECT_NE(message.find("1 pair(s) within the friction cutoff missing from the neighbor list"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("use a larger skin"), std::string::npos) << message;
+  }
+  {
+    const std::string log = etdtest::work_file("etd_implicit_apart_np" +
+                                               std::to_string(etdtest::world_size()) + ".log");
+    {
+      Lammps l;
+      two_fast_atoms(l, -40.0);
+      l.cmds({"log " + log, "run 3"});
+      const auto x = l.gather("x");
+      ASSERT_EQ(x.size(), 6u);
+      EXPECT_GT(std::fabs(x[0] - x[3]), 1.35 + 2 * 3 * 0.4 - 1e-9) << "moved apart freely";
+    }
+    if (etdtest::world_rank() == 0) {
+      const std::string text = read_file(log);
+      EXPECT_EQ(text.find("WARNING"), std::string::npos) << text;
+    }
   }
 }
