@@ -199,13 +199,13 @@ def cmd_time(args):
             variables = {"plugin": PLUGIN, "fluid": args.fluid, "pair": pair, "integrator": integrator,
                          "mass": args.mass, "dt": dt, "data": f"/tmp/accuracy/{args.fluid}.data",
                          "nequil": args.equil_steps, "windows": 1, "nwin": args.steps, "stride": 1,
-                         "msdstride": 1, "timing": "yes", "skin": args.skin}
+                         "msdstride": 1, "timing": "yes", "skin": args.skin, "newton": args.newton}
             rc, text, wall = lammps("in.accuracy", variables, work, ranks=args.ranks)
             loops = loop_times(text)
             loop, nsteps = (loops[-1].seconds, loops[-1].steps) if loops else (float("nan"), 0)
             load = os.getloadavg()[0]
             record = {"fluid": args.fluid, "mass": args.mass, "integrator": name, "fix": integrator, "dt": dt,
-                      "ranks": args.ranks, "skin": args.skin, "round": round_, "sitting": args.sitting, "steps": nsteps, "loop": loop,
+                      "ranks": args.ranks, "skin": args.skin, "newton": args.newton, "round": round_, "sitting": args.sitting, "steps": nsteps, "loop": loop,
                       "s_per_tu": loop / (nsteps * dt) if nsteps else None, "load1": load, "exit": rc,
                       "date": clock.strftime("%Y-%m-%d %H:%M")}
             breakdowns = timing_breakdowns(text)
@@ -235,7 +235,7 @@ def cmd_time_matrix(args):
         print(f"time {fluid} m={mass}: {' '.join(spec)}", flush=True)
         cmd_time(argparse.Namespace(fluid=fluid, mass=mass, cell=spec, repeats=args.repeats,
                                     steps=args.steps, equil_steps=args.equil_steps, sitting=args.sitting,
-                                    ranks=args.ranks, skin=0.3))
+                                    ranks=args.ranks, skin=0.3, newton="on"))
 
 
 def cmd_viscosity(args):
@@ -299,6 +299,8 @@ def parse_args(argv=None):
     p.add_argument("--equil-steps", type=int, default=50)
     p.add_argument("--ranks", type=int, default=1)
     p.add_argument("--skin", type=float, default=0.3)
+    p.add_argument("--newton", default="on", choices=["on", "off"],
+                   help="off: one newton-off neighbor list for pair style and fix (tables use on)")
     p.add_argument("--sitting", default=clock.strftime("%H%M"))
     p = sub.add_parser("time-matrix")
     p.add_argument("--fluid", nargs="*", choices=["GW", "P", "HS"])

@@ -168,7 +168,7 @@ def cost_per_time_unit(timings, ranks=1):
     best = {}
     for record in timings:
         if record.get("exit") != 0 or not record.get("s_per_tu") or record.get("ranks", 1) != ranks \
-                or record.get("skin", 0.3) != 0.3:
+                or record.get("skin", 0.3) != 0.3 or record.get("newton", "on") != "on":
             continue
         key = (record["fluid"], record["mass"], record["integrator"], record["dt"])
         best[key] = min(best.get(key, np.inf), record["s_per_tu"])
@@ -183,7 +183,7 @@ def breakdown_table(timings, ranks=1):
     fastest = {}
     for r in timings:
         if r.get("exit") != 0 or not r.get("steps") or r.get("ranks", 1) != ranks or "breakdown" not in r \
-                or r.get("skin", 0.3) != 0.3:
+                or r.get("skin", 0.3) != 0.3 or r.get("newton", "on") != "on":
             continue
         key = (r["fluid"], r["mass"], r["integrator"], r["dt"])
         if key not in fastest or r["loop"] < fastest[key]["loop"]:

@@ -118,6 +118,20 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertAlmostEqual(rows["imp"]["speedup"], 2.5)
         self.assertIn("| 2.50 |", am.summary_table(list(rows.values())))
 
+    def test_newton_off_and_other_skins_stay_out_of_the_tables(self):
+        # the tables compare the default settings; a faster newton-off or other-skin round of
+        # the same cell must not become its time
+        timings = [
+            {"fluid": "GW", "mass": 0.01, "integrator": "imp", "dt": 0.002, "exit": 0, "s_per_tu": 4.0},
+            {"fluid": "GW", "mass": 0.01, "integrator": "imp", "dt": 0.002, "exit": 0, "s_per_tu": 3.0,
+             "newton": "off"},
+            {"fluid": "GW", "mass": 0.01, "integrator": "imp", "dt": 0.002, "exit": 0, "s_per_tu": 2.0,
+             "skin": 0.5},
+        ]
+        self.assertEqual(am.cost_per_time_unit(timings), {("GW", 0.01, "imp", 0.002): 4.0})
+        steps = [dict(t, ranks=1, steps=400, loop=t["s_per_tu"], breakdown={"Pair": 0.1}) for t in timings]
+        self.assertIn("| GW | 0.01 | imp | 0.002 | 10.000 |", am.breakdown_table(steps))
+
     def test_rdf_deviation_counts_only_what_the_runs_resolve(self):
         ref = scan_records()[0]
         steady = record("diag", 0.001, 1.0, 20.0, 1.0, g_shift=0.015)
