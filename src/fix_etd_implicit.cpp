@@ -491,7 +491,10 @@ void FixETDImplicit::build_pairs()
     // per-pair lookups below (close_neighbors.h)
     const int nclose = etd::gather_close_neighbors(
         jlist, jnum, NEIGHMASK, xflat, xi0, xi1, xi2,
-        [&](int, double rsq) { return rsq < friction_cutsq_max; }, work.close);
+        [&](int, double rsq) {
+          return rsq < friction_cutsq_max;
+        },
+        work.close);
     const int *close = work.close.data();
     for (int jj = 0; jj < nclose; jj++) {
       const int j_bits = close[jj];

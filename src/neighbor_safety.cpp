@@ -142,8 +142,7 @@ void NeighborSafety::count_if_outrun(LAMMPS *lmp, const double top[2])
 }
 
 long NeighborSafety::missed_pairs(LAMMPS *lmp, int groupbit, const double top[2],
-                                  const std::function<double(int, int)> &cutoff_of,
-                                  int max_checked)
+                                  const std::function<double(int, int)> &cutoff_of, int max_checked)
 {
   // the same on every rank: the early returns stay collective
   if (lmp->neighbor->exclude || lmp->atom->molecular) return -1;
@@ -165,7 +164,7 @@ long NeighborSafety::missed_pairs(LAMMPS *lmp, int groupbit, const double top[2]
       const double d = x[i][k] - build_positions[3 * i + k];
       dsq += d * d;
     }
-    if (dsq <= threshold * threshold) continue;
+    if (threshold > 0.0 && dsq <= threshold * threshold) continue;    // (else every atom counts)
     for (int k = 0; k < 3; k++) mine.push_back(x[i][k]);
     for (int k = 0; k < 3; k++) mine.push_back(build_positions[3 * i + k]);
     mine.push_back(type[i]);

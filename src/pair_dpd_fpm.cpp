@@ -190,7 +190,7 @@ template <int EVFLAG, int EXTRAS, int DISSIPATIVE> void PairDPDFPM::eval()
   const int *ilist = list->ilist;
   const int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
-  if (inum == 0) return;    // (x may be unallocated on a rank without atoms)
+  if (inum == 0) return;         // (x may be unallocated on a rank without atoms)
   const double *xflat = x[0];    // LAMMPS's rows are contiguous: atom j's at 3 j
 
   for (int ii = 0; ii < inum; ii++) {
@@ -211,7 +211,10 @@ template <int EVFLAG, int EXTRAS, int DISSIPATIVE> void PairDPDFPM::eval()
     // the neighbours within the cutoff first (close_neighbors.h), then the work on those only
     const int nclose = etd::gather_close_neighbors(
         jlist, jnum, NEIGHMASK, xflat, xi[0], xi[1], xi[2],
-        [&](int j, double rsq) { return rsq < cutsqi[type[j]]; }, close_neighbors);
+        [&](int j, double rsq) {
+          return rsq < cutsqi[type[j]];
+        },
+        close_neighbors);
     const int *close = close_neighbors.data();
 
     for (int jj = 0; jj < nclose; jj++) {

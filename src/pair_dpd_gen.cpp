@@ -247,7 +247,10 @@ template <int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE> void PairDPDGen:
     // the neighbours within the cutoff first (close_neighbors.h), then the work on those only
     const int nclose = etd::gather_close_neighbors(
         jlist, jnum, NEIGHMASK, xflat, xi, yi, zi,
-        [&](int j, double rsq) { return rsq < cutsqi[type[j]]; }, close_neighbors);
+        [&](int j, double rsq) {
+          return rsq < cutsqi[type[j]];
+        },
+        close_neighbors);
     const int *close = close_neighbors.data();
     for (int jj = 0; jj < nclose; jj++) {
       int j = close[jj];
@@ -264,9 +267,8 @@ template <int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE> void PairDPDGen:
       const double rinv = 1.0 / r;
       const etd::PairCoefficients &c = crow[jtype];
 
-      const double e_dot_v =
-          (delx * (vxi - vflat[3 * j]) + dely * (vyi - vflat[3 * j + 1]) +
-           delz * (vzi - vflat[3 * j + 2])) *
+      const double e_dot_v = (delx * (vxi - vflat[3 * j]) + dely * (vyi - vflat[3 * j + 1]) +
+                              delz * (vzi - vflat[3 * j + 2])) *
           rinv;
       const double theta = (DISSIPATIVE && rsq < c.rcsq_d) ? noise.gaussian(tag_i, tag[j], step)
                                                            : 0.0;

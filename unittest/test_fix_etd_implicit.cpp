@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -547,7 +548,7 @@ TEST(FixEtdImplicit, RunWithDangerousBuildsEndsWithAWarning)
 // but unlisted: the run stops with an ERROR naming the skin. Moving apart at the same speeds,
 // their displacements add up to more than the skin just the same, but no pair can be missing:
 // the run goes on, and ends without a warning.
-void two_fast_atoms(Lammps &l, double speed)
+void two_fast_atoms(Lammps &l, double speed, double second_speed)
 {
   l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
           "neigh_modify every 1 delay 0 check yes", "region box block 0 10 0 10 0 10",
@@ -555,19 +556,22 @@ void two_fast_atoms(Lammps &l, double speed)
           "mass 1 1.0", "pair_style dpd/gen 1.0 1.0 555", "pair_coeff 1 1 18.75 4.5 0.5",
           "neighbor 0.3 bin", "group first id 1", "group second id 2",
           "velocity first set " + std::to_string(speed) + " 0 0",
-          "velocity second set " + std::to_string(-speed) + " 0 0", "timestep 0.01",
+          "velocity second set " + std::to_string(second_speed) + " 0 0", "timestep 0.01",
           "fix 1 all etd scheme implicit"});
 }
 
 TEST(FixEtdImplicit, MissingPairIsAnError)
 {
-  {
+  // closing at 40 + 40; then one atom at rest and one at 100 (half a step: 0.5, more than the
+  // whole skin, so every atom, even one that has not moved, must be among those checked)
+  for (const auto &speeds :
+       {std::array<double, 2>{40.0, -40.0}, std::array<double, 2>{100.0, 0.0}}) {
     Lammps l;
-    two_fast_atoms(l, 40.0);
+    two_fast_atoms(l, speeds[0], speeds[1]);
     const std::string message = l.error_of("run 1");
     EXPECT_NE(message.find("1 pair(s) within the friction cutoff missing from the neighbor list"),
               std::string::npos)
-        << message;
+        << speeds[0] << " " << speeds[1] << ": " << message;
     EXPECT_NE(message.find("use a larger skin"), std::string::npos) << message;
   }
   {
@@ -575,7 +579,7 @@ TEST(FixEtdImplicit, MissingPairIsAnError)
                                                std::to_string(etdtest::world_size()) + ".log");
     {
       Lammps l;
-      two_fast_atoms(l, -40.0);
+      two_fast_atoms(l, -40.0, 40.0);
       l.cmds({"log " + log, "run 3"});
       const auto x = l.gather("x");
       ASSERT_EQ(x.size(), 6u);
