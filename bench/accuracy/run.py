@@ -7,6 +7,8 @@ Sub-commands (each appends one JSON line per LAMMPS run to bench/accuracy/result
   scan         --fluid F --mass M --integrator I --dt DT [DT ...] [--windows W --window T] [--role ref]
                equilibrium observables (in.accuracy): kBT, friction-step kBT, P, g(r), D
                -> results/scan.jsonl
+  confirm      --fluid F --mass M --ref-dt DT --cell I:DT [I:DT ...] [--seeds S ...] [--windows W]
+               the reference and the cells once per seed (default 11-14, 16 windows) -> results/confirm.jsonl
   time         --fluid F --mass M --cell I:DT [I:DT ...] [--repeats R --steps N]
                cost: the cells alternated, R rounds, loop time of N steps each (no observables)
                -> results/timing.jsonl
@@ -175,7 +177,7 @@ def cmd_scan(args):
             record["loop_production"] = sum(loop.seconds for loop in loops[1:])
         except (OSError, ValueError, IndexError) as error:
             record["error"] = str(error)
-        append("scan.jsonl", record)
+        append(args.out, record)
         T = np.array(record.get("T_blocks", [np.nan]))
         P = np.array(record.get("P_blocks", [np.nan]))
         D = np.array(record.get("D_blocks", [np.nan]))
@@ -185,6 +187,20 @@ def cmd_scan(args):
         print(f"{args.fluid} m={args.mass} {args.integrator} dt={dt} [{args.role}] exit={rc} wall={wall:.0f}s "
               f"T={T.mean():.4f}+-{standard_error(T):.4f}{extra} P={P.mean():.3f}+-{standard_error(P):.3f} "
               f"D={D.mean():.4f}+-{standard_error(D):.4f} it={record.get('cg_iterations', '-')}", flush=True)
+
+
+def cmd_confirm(args):
+    """The matrix's largest steps again with independent seeds: the reference and each cell once
+    per seed (longer runs than the scans' by default) -> results/confirm.jsonl."""
+    for seed in args.seeds:
+        runs = [("stock", args.ref_dt, "ref")] + [(spec.split(":")[0], float(spec.split(":")[1]), "cell")
+                                                  for spec in args.cell]
+        for name, dt, role in runs:
+            if name not in INTEGRATORS:
+                sys.exit(f"run.py confirm: unknown integrator '{name}' in --cell")
+            cmd_scan(argparse.Namespace(fluid=args.fluid, mass=args.mass, integrator=name, dt=[dt],
+                                        windows=args.windows, window=0.25, equil=0.2, role=role, seed=seed,
+                                        out="confirm.jsonl"))
 
 
 def cmd_time(args):
@@ -290,6 +306,14 @@ def parse_args(argv=None):
     p.add_argument("--equil", type=float, default=0.2, help="time units of equilibration")
     p.add_argument("--role", default="cell", choices=["cell", "ref"])
     p.add_argument("--seed", type=int, default=9823)
+    p.add_argument("--out", default="scan.jsonl", help="file under results/ the records are appended to")
+    p = sub.add_parser("confirm")
+    p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
+    p.add_argument("--mass", type=float, required=True)
+    p.add_argument("--ref-dt", type=float, required=True, help="the reference's step (stock)")
+    p.add_argument("--cell", nargs="+", required=True, help="INTEGRATOR:DT")
+    p.add_argument("--seeds", type=int, nargs="+", default=[11, 12, 13, 14])
+    p.add_argument("--windows", type=int, default=16)
     p = sub.add_parser("time")
     p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
@@ -326,7 +350,8 @@ def parse_args(argv=None):
 
 def main(argv=None):
     args = parse_args(argv)
-    {"equilibrate": cmd_equilibrate, "scan": cmd_scan, "time": cmd_time, "time-matrix": cmd_time_matrix,
+    {"equilibrate": cmd_equilibrate, "scan": cmd_scan, "confirm": cmd_confirm, "time": cmd_time,
+     "time-matrix": cmd_time_matrix,
      "viscosity": cmd_viscosity}[args.command](args)
 
 

@@ -379,6 +379,64 @@ def plot_map(cell_list, path, temperature="kBT_friction"):
     return path
 
 
+def _seed_means(records, key):
+    return np.array([np.mean(r.get(key, r["T_blocks"])) for r in records])
+
+
+def seed_check(records):
+    """The largest steps of the matrix re-run with several seeds (results/confirm.jsonl): for
+    each (fluid, mass, integrator, dt), the deviation of the mean over seeds from the mean of the
+    reference's seeds, with the standard error from both scatters. g(r) pools the windows of all
+    seeds. Returns Cells with n_seeds set."""
+    refs, groups = {}, {}
+    for record in records:
+        if record.get("exit") != 0 or "error" in record:
+            continue
+        if record.get("role") == "ref":
+            refs.setdefault((record["fluid"], record["mass"]), []).append(record)
+        else:
+            groups.setdefault((record["fluid"], record["mass"], record["integrator"], record["dt"]), []).append(record)
+    out = []
+    for (fluid, mass, integrator, dt), group_records in sorted(groups.items()):
+        ref_records = refs.get((fluid, mass))
+        if not ref_records or len(ref_records) < 2 or len(group_records) < 2:
+            continue
+        cell = Cell(fluid, mass, integrator, dt)
+        cell.n_seeds = len(group_records)
+        cell.n_ref_seeds = len(ref_records)
+        for name, key in (("kBT", "T_blocks"), ("kBT_friction", "T5_blocks"), ("P", "P_blocks"),
+                          ("D", "D_blocks")):
+            x = _seed_means(group_records, key)
+            ref = _seed_means(ref_records, "T_blocks" if key == "T5_blocks" else key)
+            error = np.hypot(standard_error(x) / ref.mean(), x.mean() * standard_error(ref) / ref.mean()**2)
+            cell.deviations[name] = Deviation(x.mean() / ref.mean() - 1.0, float(error))
+        pooled = {"rdf_blocks": [b for r in group_records for b in r["rdf_blocks"]]}
+        pooled_ref = {"rdf_blocks": [b for r in ref_records for b in r["rdf_blocks"]]}
+        cell.deviations["g(r)"] = _rdf_deviation(pooled, pooled_ref)
+        out.append(cell)
+    return out
+
+
+def seed_check_table(cell_list, temperature="kBT_friction"):
+    """Markdown: one row per re-run cell, each observable's deviation +- error, and whether
+    every observable (kBT read as `temperature`) is within tolerance by the mean."""
+    names = [temperature, "P", "g(r)", "D"]
+    lines = ["| fluid | m | integrator | dt | seeds (ref) | " + " | ".join(names) + " | within |",
+             "|---|---|---|---|---|" + "---|" * len(names) + "---|"]
+    for cell in cell_list:
+        parts = []
+        for name in names:
+            d = cell.deviations[name]
+            if name == "g(r)":
+                parts.append(f"{d.value:.4f} +- {d.error:.4f}")
+            else:
+                parts.append(f"{100 * d.value:+.2f} +- {100 * d.error:.2f} %")
+        within = "yes" if cell.passes(names) else "no"
+        lines.append(f"| {cell.fluid} | {cell.mass:g} | {cell.integrator} | {_format_dt(cell.dt)} | "
+                     f"{cell.n_seeds} ({cell.n_ref_seeds}) | " + " | ".join(parts) + f" | {within} |")
+    return "\n".join(lines)
+
+
 def main(argv=None):
     import argparse
     import os
@@ -397,6 +455,11 @@ def main(argv=None):
         print(summary_table(summary_rows(cell_list, costs, "kBT_friction")))
         print(f"\n## Cost of a step against a stock step, {ranks} rank(s)\n")
         print(breakdown_table(timings, ranks))
+        print()
+    confirm = os.path.join(args.results, "confirm.jsonl")
+    if os.path.exists(confirm):
+        print("## Largest steps re-run with independent seeds (friction-step kBT)\n")
+        print(seed_check_table(seed_check(read_jsonl(confirm))))
         print()
     print("\n## Every cell\n")
     print(cell_table(cell_list))

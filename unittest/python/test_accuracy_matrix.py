@@ -165,6 +165,28 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertIn("**x**", table)
         self.assertEqual(table.count("\n"), 1 + len(self.cells))
 
+    def test_seed_check_uses_the_scatter_of_the_seeds(self):
+        # three reference seeds with D means 0.99, 1.00, 1.01 and three seeds of one cell with D
+        # means 0.96, 0.97, 0.98: the cell is 3 % low with an error from the seeds' scatter
+        # (0.01 / sqrt(3) each), not from the windows (0.002 per seed)
+        records = [record("stock", 0.0001, 1.0, 20.0, d, role="ref") for d in (0.99, 1.0, 1.01)]
+        records += [record("imp", 0.007, 0.95, 19.9, d, T5=1.0) for d in (0.96, 0.97, 0.98)]
+        records += [record("imp", 0.005, 0.97, 19.95, 0.99, T5=1.0)]    # one seed: no check
+        records.append(dict(record("imp", 0.007, 0.95, 19.9, 0.5, T5=1.0), exit=1))    # failed run
+        checked = am.seed_check(records)
+        self.assertEqual(len(checked), 1)
+        cell = checked[0]
+        self.assertEqual((cell.integrator, cell.dt, cell.n_seeds, cell.n_ref_seeds), ("imp", 0.007, 3, 3))
+        self.assertAlmostEqual(cell.deviations["D"].value, -0.03, places=12)
+        self.assertAlmostEqual(cell.deviations["D"].error, np.hypot(0.01 / 3**0.5, 0.97 * 0.01 / 3**0.5), places=12)
+        self.assertAlmostEqual(cell.deviations["kBT_friction"].value, 0.0, places=12)    # T5 against ref kBT
+        self.assertAlmostEqual(cell.deviations["kBT"].value, -0.05, places=12)
+        self.assertFalse(cell.passes(["kBT_friction", "P", "g(r)", "D"]))
+        table = am.seed_check_table(checked)
+        self.assertIn("| GW | 0.01 | imp | 0.007 | 3 (3) |", table)
+        self.assertIn("-3.00 +- ", table)
+        self.assertTrue(table.endswith("| no |"))
+
 
 if __name__ == "__main__":
     unittest.main()
