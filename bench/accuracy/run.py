@@ -240,9 +240,11 @@ def cmd_time_matrix(args):
     temperature criteria), alternated in rounds."""
     from etddpd import accuracy_matrix as am
     cell_list = am.cells(am.read_jsonl(os.path.join(RESULTS, "scan.jsonl")))
+    confirm = os.path.join(RESULTS, "confirm.jsonl")
+    checked = am.seed_check(am.read_jsonl(confirm)) if os.path.exists(confirm) else None
     steps = {}
     for temperature in ("kBT", "kBT_friction"):
-        for row in am.summary_rows(cell_list, temperature=temperature):
+        for row in am.summary_rows(cell_list, temperature=temperature, checked=checked):
             if row["dt"] is not None and (not args.fluid or row["fluid"] in args.fluid) \
                     and (not args.mass or row["mass"] in args.mass):
                 steps.setdefault((row["fluid"], row["mass"]), set()).add((row["integrator"], row["dt"]))

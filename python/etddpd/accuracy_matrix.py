@@ -251,14 +251,39 @@ def _format_dt(dt):
     return "-" if dt is None else f"{dt:g}"
 
 
-def summary_rows(cell_list, costs=None, temperature="kBT"):
+def _checked_step(scan, observables, dt, checked):
+    """dt, or where the seed check (seed_check's cells of this fluid, mass and integrator) finds
+    the mean over seeds outside tolerance there, the next smaller scanned step that passed its
+    scan and is not failed by a seed check; with whether that step was seed-checked."""
+    verdict = {c.dt: c.passes(observables) for c in checked}
+    if dt is None or verdict.get(dt, True):
+        return dt, dt in verdict
+    for cell in sorted(scan, key=lambda c: -c.dt):
+        if cell.dt < dt and cell.passes(observables) and verdict.get(cell.dt, True):
+            return cell.dt, cell.dt in verdict
+    return None, False
+
+
+def summary_rows(cell_list, costs=None, temperature="kBT", checked=None):
     """One row per (fluid, mass, integrator): the largest step within tolerance on every
     observable, the temperature taken as `temperature` ('kBT' end of step, or 'kBT_friction'),
-    what limits it, its cost per time unit where timed, and the speed-up over stock + nve."""
+    what limits it, its cost per time unit where timed, and the speed-up over stock + nve.
+    checked: seed_check's cells; a largest step that they find outside tolerance gives way to
+    the next smaller one (row['seed_checked'] says whether the step taken was re-run)."""
     observables = [temperature, "P", "g(r)", "D"]
     rows = []
     for (fluid, mass), scans in sorted(group(cell_list).items()):
         best = {name: largest_step(scan, observables) for name, scan in scans.items()}
+        seed_checked, seed_limited = {}, {}
+        if checked is not None:
+            for name, scan in scans.items():
+                mine = [c for c in checked if (c.fluid, c.mass, c.integrator) == (fluid, mass, name)]
+                dt, seed_checked[name] = _checked_step(scan, observables, best[name], mine)
+                if dt != best[name]:    # the seeds moved it: what fails at the step they rejected
+                    rejected = next(c for c in mine if c.dt == best[name])
+                    seed_limited[name] = [n + " (seeds)" for n in observables
+                                          if not rejected.deviations[n].within(TOLERANCE[n])]
+                best[name] = dt
         cost = {}
         for name, dt in best.items():
             if costs is not None and dt is not None:
@@ -273,21 +298,23 @@ def summary_rows(cell_list, costs=None, temperature="kBT"):
             rows.append({"fluid": fluid, "mass": mass, "integrator": name, "dt": dt,
                          "stock_dt": best.get("stock"),
                          "step_ratio": (dt / best["stock"]) if dt and best.get("stock") else None,
-                         "limited_by": limiting(scans[name], observables, dt),
-                         "s_per_tu": cost.get(name), "speedup": speedup})
+                         "limited_by": seed_limited.get(name) or limiting(scans[name], observables, dt),
+                         "s_per_tu": cost.get(name), "speedup": speedup,
+                         "seed_checked": seed_checked.get(name, False)})
     return rows
 
 
 def summary_table(rows):
     lines = ["| fluid | m | integrator | largest dt | dt / stock's | limited by (next dt) | s per time unit | speed-up |",
              "|---|---|---|---|---|---|---|---|"]
+    # a step the seed check re-ran and kept is marked with an asterisk
     for r in rows:
         ratio = "-" if r["step_ratio"] is None else f"{r['step_ratio']:.1f}"
         cost = "-" if r["s_per_tu"] is None else f"{r['s_per_tu']:.2f}"
         speed = "-" if r["speedup"] is None else f"{r['speedup']:.2f}"
         limited = ", ".join(r["limited_by"]) or "(none scanned beyond)"
         lines.append(f"| {r['fluid']} | {r['mass']:g} | {INTEGRATOR_NAMES[r['integrator']]} | "
-                     f"{_format_dt(r['dt'])} | {ratio} | {limited} | {cost} | {speed} |")
+                     f"{_format_dt(r['dt'])}{'*' if r.get('seed_checked') else ''} | {ratio} | {limited} | {cost} | {speed} |")
     return "\n".join(lines)
 
 
@@ -447,19 +474,21 @@ def main(argv=None):
     cell_list = cells(read_jsonl(os.path.join(args.results, "scan.jsonl")))
     timing = os.path.join(args.results, "timing.jsonl")
     timings = read_jsonl(timing) if os.path.exists(timing) else []
+    confirm = os.path.join(args.results, "confirm.jsonl")
+    checked = seed_check(read_jsonl(confirm)) if os.path.exists(confirm) else None
+    if checked:
+        print("## Largest steps re-run with independent seeds (results/confirm.jsonl)\n")
+        print(seed_check_table(checked))
+        print("\nIn the tables below a largest step that these re-runs find outside tolerance gives way to the")
+        print("next smaller step of the scan; an asterisk marks a step the re-runs kept.\n")
     for ranks in sorted({r.get("ranks", 1) for r in timings} or {1}):
         costs = cost_per_time_unit(timings, ranks)
         print(f"## Largest step within tolerance on every observable (end-of-step kBT), {ranks} rank(s)\n")
-        print(summary_table(summary_rows(cell_list, costs, "kBT")))
+        print(summary_table(summary_rows(cell_list, costs, "kBT", checked)))
         print(f"\n## The same with the friction-step kBT as the implicit scheme's temperature, {ranks} rank(s)\n")
-        print(summary_table(summary_rows(cell_list, costs, "kBT_friction")))
+        print(summary_table(summary_rows(cell_list, costs, "kBT_friction", checked)))
         print(f"\n## Cost of a step against a stock step, {ranks} rank(s)\n")
         print(breakdown_table(timings, ranks))
-        print()
-    confirm = os.path.join(args.results, "confirm.jsonl")
-    if os.path.exists(confirm):
-        print("## Largest steps re-run with independent seeds (friction-step kBT)\n")
-        print(seed_check_table(seed_check(read_jsonl(confirm))))
         print()
     print("\n## Every cell\n")
     print(cell_table(cell_list))

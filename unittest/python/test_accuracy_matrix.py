@@ -187,6 +187,43 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertIn("-3.00 +- ", table)
         self.assertTrue(table.endswith("| no |"))
 
+    def test_a_largest_step_the_seeds_reject_gives_way(self):
+        # the scan's largest step by the friction-step kBT is 0.003; four seeds there put D 3 %
+        # low, so the row takes 0.002 (not re-run: no asterisk) and says why
+        refs = [record("stock", 0.0001, 1.0, 20.0, d, role="ref") for d in (0.99, 1.0, 1.01, 1.0)]
+        seeds = [record("imp", 0.003, 0.985, 19.9, d, T5=1.0) for d in (0.96, 0.97, 0.98, 0.97)]
+        seeds += [record("stock", 0.0005, 1.008, 20.1, d) for d in (1.0, 1.01, 1.0, 1.01)]
+        checked = am.seed_check(refs + seeds)
+        plain = {r["integrator"]: r for r in am.summary_rows(self.cells, temperature="kBT_friction")}
+        self.assertEqual(plain["imp"]["dt"], 0.003)
+        rows = {r["integrator"]: r for r in am.summary_rows(self.cells, temperature="kBT_friction",
+                                                            checked=checked)}
+        self.assertEqual(rows["imp"]["dt"], 0.002)
+        self.assertFalse(rows["imp"]["seed_checked"])
+        self.assertEqual(rows["imp"]["limited_by"], ["D (seeds)"])
+        self.assertEqual(rows["stock"]["dt"], 0.0005)    # kept by its seeds: marked
+        self.assertTrue(rows["stock"]["seed_checked"])
+        self.assertIn("| 0.0005* |", am.summary_table(list(rows.values())))
+        self.assertAlmostEqual(rows["imp"]["step_ratio"], 4.0)
+
+    def test_main_reads_the_seed_check(self):
+        import contextlib
+        import io
+        refs = [record("stock", 0.0001, 1.0, 20.0, d, role="ref") for d in (0.99, 1.0, 1.01)]
+        seeds = [record("imp", 0.003, 0.985, 19.9, d, T5=1.0) for d in (0.96, 0.97, 0.98)]
+        with tempfile.TemporaryDirectory() as folder:
+            for name, records in (("scan.jsonl", scan_records()), ("confirm.jsonl", refs + seeds)):
+                with open(os.path.join(folder, name), "w") as out:
+                    for r in records:
+                        out.write(json.dumps(r) + "\n")
+            printed = io.StringIO()
+            with contextlib.redirect_stdout(printed):
+                self.assertEqual(am.main([folder]), 0)
+        text = printed.getvalue()
+        self.assertIn("re-run with independent seeds", text)
+        self.assertIn("| GW | 0.01 | imp | 0.003 | 3 (3) |", text)
+        self.assertIn("D (seeds)", text)
+
 
 if __name__ == "__main__":
     unittest.main()
