@@ -162,13 +162,26 @@ def limiting(scan, observables, dt):
             if name in cell.deviations and not cell.deviations[name].within(TOLERANCE[name])]
 
 
+def _sitting(record):
+    """When a timing was taken: its day and the sitting's start (run.py --sitting)."""
+    return (record.get("date", "")[:10], str(record.get("sitting", "")))
+
+
 def cost_per_time_unit(timings, ranks=1):
     """Seconds per time unit of each (fluid, mass, integrator, dt) on that many ranks: the fastest
-    of the alternated rounds (other load only slows a run down)."""
+    of the alternated rounds (other load only slows a run down), from the latest sitting that
+    timed that fluid and mass (cells are compared only with timings of the same sitting: a later
+    sitting may be on another machine)."""
+    usable = [r for r in timings
+              if r.get("exit") == 0 and r.get("s_per_tu") and r.get("ranks", 1) == ranks
+              and r.get("skin", 0.3) == 0.3 and r.get("newton", "on") == "on"]
+    latest = {}
+    for record in usable:
+        key = (record["fluid"], record["mass"])
+        latest[key] = max(latest.get(key, _sitting(record)), _sitting(record))
     best = {}
-    for record in timings:
-        if record.get("exit") != 0 or not record.get("s_per_tu") or record.get("ranks", 1) != ranks \
-                or record.get("skin", 0.3) != 0.3 or record.get("newton", "on") != "on":
+    for record in usable:
+        if _sitting(record) != latest[(record["fluid"], record["mass"])]:
             continue
         key = (record["fluid"], record["mass"], record["integrator"], record["dt"])
         best[key] = min(best.get(key, np.inf), record["s_per_tu"])
@@ -179,11 +192,16 @@ def breakdown_table(timings, ranks=1):
     """Per-step cost of each timed cell against a stock step of the same fluid and mass (the
     fastest round of each), split as LAMMPS's timing breakdown: milliseconds per step in pair
     forces, neighbor lists, communication, fixes (the integrator; for the implicit scheme its
-    whole friction step) and the rest."""
+    whole friction step) and the rest; the latest sitting of each fluid and mass."""
+    usable = [r for r in timings
+              if r.get("exit") == 0 and r.get("steps") and r.get("ranks", 1) == ranks and "breakdown" in r
+              and r.get("skin", 0.3) == 0.3 and r.get("newton", "on") == "on"]
+    latest = {}
+    for r in usable:
+        latest[(r["fluid"], r["mass"])] = max(latest.get((r["fluid"], r["mass"]), _sitting(r)), _sitting(r))
     fastest = {}
-    for r in timings:
-        if r.get("exit") != 0 or not r.get("steps") or r.get("ranks", 1) != ranks or "breakdown" not in r \
-                or r.get("skin", 0.3) != 0.3 or r.get("newton", "on") != "on":
+    for r in usable:
+        if _sitting(r) != latest[(r["fluid"], r["mass"])]:
             continue
         key = (r["fluid"], r["mass"], r["integrator"], r["dt"])
         if key not in fastest or r["loop"] < fastest[key]["loop"]:

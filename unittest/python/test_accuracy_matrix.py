@@ -118,6 +118,23 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertAlmostEqual(rows["imp"]["speedup"], 2.5)
         self.assertIn("| 2.50 |", am.summary_table(list(rows.values())))
 
+    def test_only_the_latest_sitting_of_a_fluid_and_mass_counts(self):
+        # a later sitting (another machine, say) re-times this fluid and mass: its stock and its
+        # implicit cell are compared with each other, not with an earlier, faster stock round
+        def timing(integrator, dt, s_per_tu, date, sitting):
+            return {"fluid": "GW", "mass": 0.01, "integrator": integrator, "dt": dt, "exit": 0,
+                    "s_per_tu": s_per_tu, "date": date, "sitting": sitting}
+        timings = [timing("stock", 0.0005, 10.0, "2026-11-25 10:08", "1008"),
+                   timing("imp", 0.003, 4.0, "2026-11-25 10:08", "1008"),
+                   timing("stock", 0.0005, 15.0, "2026-11-26 05:00", "0500"),
+                   timing("imp", 0.002, 5.0, "2026-11-26 05:00", "0500"),
+                   dict(timing("stock", 0.0005, 1.0, "2026-11-26 05:00", "0500"), fluid="P")]
+        costs = am.cost_per_time_unit(timings)
+        self.assertEqual(costs[("GW", 0.01, "stock", 0.0005)], 15.0)
+        self.assertEqual(costs[("GW", 0.01, "imp", 0.002)], 5.0)
+        self.assertNotIn(("GW", 0.01, "imp", 0.003), costs)
+        self.assertEqual(costs[("P", 0.01, "stock", 0.0005)], 1.0)
+
     def test_newton_off_and_other_skins_stay_out_of_the_tables(self):
         # the tables compare the default settings; a faster newton-off or other-skin round of
         # the same cell must not become its time
