@@ -188,6 +188,17 @@ def poiseuille(prefix, g, H, h, mu=PAPER_MU, R=PAPER_R, lx=15.0, ly=6.0):
                 umax=float(np.polyval(c, -c[1] / (2 * c[0]))))
 
 
+def eq23_factors(l, R=PAPER_R):
+    """Pan et al.'s eq. (23) for two fixed spheres side by side a distance l apart in a uniform
+    stream U (a series in R / l to fifth order): the drag factor f (F = 6 pi mu R f U) and the
+    torque factor (T = 8 pi mu R^3 U times it)."""
+    x = R / l
+    f = 1 - 3 * x / 4 + 9 * x ** 2 / 16 - 59 * x ** 3 / 64 + 465 * x ** 4 / 256 - 15813 * x ** 5 / 7168
+    torque = 3 * x / (4 * l) - 9 * x ** 2 / (16 * l) + 27 * x ** 3 / (64 * l) - 273 * x ** 4 / (256 * l) \
+        + 1683 * x ** 5 / (1024 * l)
+    return f, torque
+
+
 def two_spheres(path, L, g, nfluid, l, mu=PAPER_MU, R=PAPER_R):
     """Two fixed colloids a distance l apart (along y) in a periodic cube, flow along x (Pan et
     al. eq. 23). Drag per colloid F = N_fluid g / 2. Periodic images to leading order: each
@@ -200,10 +211,7 @@ def two_spheres(path, L, g, nfluid, l, mu=PAPER_MU, R=PAPER_R):
     natoms = nfluid + 2
     u, uerr = batch_mean(d[:, 1] * nfluid / natoms)
     force = nfluid * g / 2
-    x = R / l
-    f = 1 - 3 * x / 4 + 9 * x ** 2 / 16 - 59 * x ** 3 / 64 + 465 * x ** 4 / 256 - 15813 * x ** 5 / 7168
-    tfac = 3 * x / (4 * l) - 9 * x ** 2 / (16 * l) + 27 * x ** 3 / (64 * l) - 273 * x ** 4 / (256 * l) \
-        + 1683 * x ** 5 / (1024 * l)
+    f, tfac = eq23_factors(l, R)
     corr = 1 - 2 * HASIMOTO * R * f / L
     f_pred = 6 * math.pi * mu * R * f * u / corr
     u_eff = force / (6 * math.pi * mu * R * f)

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Check python/etddpd/fpm_torque_field.py: the pair law's torque against hand-worked cases,
 the Stokes disturbance against its defining properties (no slip on the sphere, spin = half the
-curl, no divergence), the sum over a synthetic field file against the sum over its atoms, and
+curl, no divergence), the linear-flow and any-direction disturbances (no slip), the method of
+reflections against eq. (23)'s series, the sum over a synthetic field file against the sum over its atoms, and
 the sampling ratio's limits (1 far from the neighbour, 0 torque for a lone colloid). Exits 1 on
 any mismatch."""
 import os
@@ -117,6 +118,46 @@ with tempfile.TemporaryDirectory() as tmp:
     same = ft.stokes_sampling(1.0, hollow, spacing=0.1, measured=axial)['ratio']
     check('sampling with the ring file of Stokes flow equals the Stokes sampling', same,
           ft.stokes_sampling(1.0, hollow, spacing=0.1)['ratio'], 0.005)
+
+# A sphere at rest in a uniform stream of any direction, and held still in a linear flow
+# (rotation and straining): no slip on its surface (incident + disturbance = 0 there)
+V = np.array([0.3, -0.5, 0.8])
+check('uniform stream along V: no slip',
+      float(np.abs(V + ft.uniform_flow_disturbance(R * n, V, R)).max()), 0.0, 1e-12)
+along_x = ft.uniform_flow_disturbance(R * 1.7 * n, np.array([U, 0.0, 0.0]), R)
+check('uniform stream along x: Stokes disturbance',
+      float(np.abs(along_x - ft.stokes_disturbance(R * 1.7 * n, U, R)[0]).max()), 0.0, 1e-12)
+rotation = np.array([0.2, -0.4, 0.7])
+strain = np.array([[0.3, 0.1, -0.2], [0.1, -0.5, 0.4], [-0.2, 0.4, 0.2]])    # symmetric, traceless
+surface = R * n
+incident = np.cross(rotation, surface) + surface @ strain.T
+check('linear flow: no slip', float(np.abs(incident + ft.linear_flow_disturbance(surface, rotation, strain, R)).max()),
+      0.0, 1e-12)
+far = R * 40.0 * n
+check('linear flow: disturbance decays (r^-2 at 40 R)',
+      float(np.abs(ft.linear_flow_disturbance(far, rotation, strain, R)).max()), 0.0, 2e-3 * R)
+# the numerical spin and gradient against the analytic ones of the Stokes disturbance
+probe = np.array([[0.5, 0.3, -0.2], [-0.4, 0.6, 0.1]])
+check('spin_of: half the curl', float(np.abs(ft.spin_of(lambda y: ft.stokes_disturbance(y, U, R)[0], probe)
+                                             - ft.stokes_disturbance(probe, U, R)[1]).max()), 0.0, 1e-8)
+G = ft.velocity_gradient(lambda y: y @ strain.T + np.cross(rotation, y), np.zeros(3))
+check('velocity_gradient of a linear flow', float(np.abs(G - (strain + np.array(
+    [[0, -rotation[2], rotation[1]], [rotation[2], 0, -rotation[0]], [-rotation[1], rotation[0], 0]]))).max()),
+      0.0, 1e-9)
+# Reflections: the continuum drag and torque factors of the pair converge to eq. (23)'s series
+# (fifth order in R / l) and one reflection is the superposition of two lone spheres
+for sep in (1.0, 1.5):
+    f23, t23 = ft.eq23_factors(sep)
+    reflected = ft.reflected_sampling(sep, lambda r: np.full_like(np.asarray(r, dtype=float), 3.0),
+                                      reflections=4, spacing=0.1)
+    check(f'l = {sep}: drag factor of four reflections against eq. (23)', reflected['incident_speed'], f23, 0.01)
+    check(f'l = {sep}: torque factor of four reflections against eq. (23)', reflected['incident_spin'], t23, 0.01)
+one1, one2 = ft.two_sphere_flow(1.0, reflections=1)
+check('one reflection: sphere 2 is the lone Stokes disturbance about it',
+      float(np.abs(one2(probe) - ft.stokes_disturbance(probe - np.array([0.0, 1.0, 0.0]), 1.0, R)[0]).max()), 0.0, 1e-12)
+four1, four2 = ft.two_sphere_flow(1.0, reflections=4)
+check('four reflections: no slip on sphere 1 (to the neglected curvature of the incident flow)',
+      float(np.abs(1.0 * np.array([1.0, 0.0, 0.0]) + four1(R * n) + four2(R * n)).max()), 0.0, 0.02)
 
 # inverse-variance weighting: two equal errors give the plain mean, error / sqrt(2)
 mean, err, chi2 = ft.weighted_mean([1.0, 1.2], [0.1, 0.1])
