@@ -433,11 +433,17 @@ def seed_check(records):
     each (fluid, mass, integrator, dt), the deviation of the mean over seeds from the mean of the
     reference's seeds, with the standard error from both scatters. g(r) pools the windows of all
     seeds. Returns Cells with n_seeds set."""
-    refs, groups = {}, {}
-    for record in records:
-        if record.get("exit") != 0 or "error" in record:
-            continue
+    usable = [r for r in records if r.get("exit") == 0 and "error" not in r]
+    # the reference of a fluid and mass is its smallest-step stock run; reference runs at a
+    # larger step (an earlier, less accurate reference) are stock cells against it
+    ref_dt = {}
+    for record in usable:
         if record.get("role") == "ref":
+            key = (record["fluid"], record["mass"])
+            ref_dt[key] = min(ref_dt.get(key, np.inf), record["dt"])
+    refs, groups = {}, {}
+    for record in usable:
+        if record.get("role") == "ref" and record["dt"] == ref_dt[(record["fluid"], record["mass"])]:
             refs.setdefault((record["fluid"], record["mass"]), []).append(record)
         else:
             groups.setdefault((record["fluid"], record["mass"], record["integrator"], record["dt"]), []).append(record)

@@ -223,6 +223,18 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertIn("| 0.0005* |", am.summary_table(list(rows.values())))
         self.assertAlmostEqual(rows["imp"]["step_ratio"], 4.0)
 
+    def test_seed_check_takes_the_smallest_step_reference(self):
+        # a reference at a smaller step joins later: the earlier one (larger step) becomes a stock
+        # cell, 1 % high in P against it
+        refs = [record("stock", 0.0001, 1.0, 20.0, d, role="ref") for d in (0.99, 1.0, 1.01)]
+        finer = [record("stock", 0.00003, 1.0, p, 1.0, role="ref") for p in (19.79, 19.8, 19.81)]
+        cells = [record("imp", 0.003, 0.985, 19.8, d, T5=1.0) for d in (0.99, 1.0, 1.01)]
+        checked = {(c.integrator, c.dt): c for c in am.seed_check(refs + finer + cells)}
+        self.assertEqual(set(checked), {("stock", 0.0001), ("imp", 0.003)})
+        self.assertAlmostEqual(checked[("stock", 0.0001)].deviations["P"].value, 20.0 / 19.8 - 1.0, places=12)
+        self.assertAlmostEqual(checked[("imp", 0.003)].deviations["P"].value, 0.0, places=12)
+        self.assertEqual(checked[("imp", 0.003)].n_ref_seeds, 3)
+
     def test_main_reads_the_seed_check(self):
         import contextlib
         import io
