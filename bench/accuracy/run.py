@@ -192,12 +192,14 @@ def cmd_scan(args):
 def cmd_confirm(args):
     """The matrix's largest steps again with independent seeds: the reference and each cell once
     per seed (longer runs than the scans' by default) -> results/confirm.jsonl."""
+    runs = [("stock", args.ref_dt, "ref")]
+    for spec in args.cell:
+        name, dt = spec.split(":")
+        if name not in INTEGRATORS:
+            sys.exit(f"run.py confirm: unknown integrator '{name}' in --cell")
+        runs.append((name, float(dt), "cell"))
     for seed in args.seeds:
-        runs = [("stock", args.ref_dt, "ref")] + [(spec.split(":")[0], float(spec.split(":")[1]), "cell")
-                                                  for spec in args.cell]
         for name, dt, role in runs:
-            if name not in INTEGRATORS:
-                sys.exit(f"run.py confirm: unknown integrator '{name}' in --cell")
             cmd_scan(argparse.Namespace(fluid=args.fluid, mass=args.mass, integrator=name, dt=[dt],
                                         windows=args.windows, window=0.25, equil=0.2, role=role, seed=seed,
                                         out="confirm.jsonl"))

@@ -167,22 +167,27 @@ def _sitting(record):
     return (record.get("date", "")[:10], str(record.get("sitting", "")))
 
 
-def cost_per_time_unit(timings, ranks=1):
-    """Seconds per time unit of each (fluid, mass, integrator, dt) on that many ranks: the fastest
-    of the alternated rounds (other load only slows a run down), from the latest sitting that
-    timed that fluid and mass (cells are compared only with timings of the same sitting: a later
-    sitting may be on another machine)."""
+def _latest_sitting(timings, ranks, wanted):
+    """The timings the tables use: successful rounds on that many ranks at the default settings
+    (skin 0.3, newton on) that have the field `wanted`, from the latest sitting that timed each
+    fluid and mass (cells are compared only with timings of the same sitting: a later sitting
+    may be on another machine)."""
     usable = [r for r in timings
-              if r.get("exit") == 0 and r.get("s_per_tu") and r.get("ranks", 1) == ranks
+              if r.get("exit") == 0 and r.get(wanted) and r.get("ranks", 1) == ranks
               and r.get("skin", 0.3) == 0.3 and r.get("newton", "on") == "on"]
     latest = {}
     for record in usable:
         key = (record["fluid"], record["mass"])
         latest[key] = max(latest.get(key, _sitting(record)), _sitting(record))
+    return [r for r in usable if _sitting(r) == latest[(r["fluid"], r["mass"])]]
+
+
+def cost_per_time_unit(timings, ranks=1):
+    """Seconds per time unit of each (fluid, mass, integrator, dt) on that many ranks: the fastest
+    of the alternated rounds (other load only slows a run down), from the latest sitting of each
+    fluid and mass."""
     best = {}
-    for record in usable:
-        if _sitting(record) != latest[(record["fluid"], record["mass"])]:
-            continue
+    for record in _latest_sitting(timings, ranks, "s_per_tu"):
         key = (record["fluid"], record["mass"], record["integrator"], record["dt"])
         best[key] = min(best.get(key, np.inf), record["s_per_tu"])
     return best
@@ -193,15 +198,9 @@ def breakdown_table(timings, ranks=1):
     fastest round of each), split as LAMMPS's timing breakdown: milliseconds per step in pair
     forces, neighbor lists, communication, fixes (the integrator; for the implicit scheme its
     whole friction step) and the rest; the latest sitting of each fluid and mass."""
-    usable = [r for r in timings
-              if r.get("exit") == 0 and r.get("steps") and r.get("ranks", 1) == ranks and "breakdown" in r
-              and r.get("skin", 0.3) == 0.3 and r.get("newton", "on") == "on"]
-    latest = {}
-    for r in usable:
-        latest[(r["fluid"], r["mass"])] = max(latest.get((r["fluid"], r["mass"]), _sitting(r)), _sitting(r))
     fastest = {}
-    for r in usable:
-        if _sitting(r) != latest[(r["fluid"], r["mass"])]:
+    for r in _latest_sitting(timings, ranks, "steps"):
+        if "breakdown" not in r:
             continue
         key = (r["fluid"], r["mass"], r["integrator"], r["dt"])
         if key not in fastest or r["loop"] < fastest[key]["loop"]:
@@ -457,10 +456,9 @@ def seed_check(records):
         cell.n_ref_seeds = len(ref_records)
         for name, key in (("kBT", "T_blocks"), ("kBT_friction", "T5_blocks"), ("P", "P_blocks"),
                           ("D", "D_blocks")):
-            x = _seed_means(group_records, key)
-            ref = _seed_means(ref_records, "T_blocks" if key == "T5_blocks" else key)
-            error = np.hypot(standard_error(x) / ref.mean(), x.mean() * standard_error(ref) / ref.mean()**2)
-            cell.deviations[name] = Deviation(x.mean() / ref.mean() - 1.0, float(error))
+            # each seed's mean is one sample: the windows of one run are not independent enough
+            cell.deviations[name] = _relative(_seed_means(group_records, key),
+                                              _seed_means(ref_records, "T_blocks" if key == "T5_blocks" else key))
         pooled = {"rdf_blocks": [b for r in group_records for b in r["rdf_blocks"]]}
         pooled_ref = {"rdf_blocks": [b for r in ref_records for b in r["rdf_blocks"]]}
         cell.deviations["g(r)"] = _rdf_deviation(pooled, pooled_ref)

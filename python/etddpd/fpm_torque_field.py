@@ -221,9 +221,7 @@ def reflected_sampling(l, lone_density, R=PAPER_R, reflections=4, spacing=0.05):
     to set against eq. (23)'s f(l) and its torque factor."""
     sphere1, sphere2 = two_sphere_flow(l, R, reflections)
     centre2 = np.array([0.0, l, 0.0])
-    g = np.arange(-1.0 + 0.5 * spacing, 1.0, spacing)
-    x = np.stack(np.meshgrid(g, g, g, indexing='ij'), axis=-1).reshape(-1, 3)
-    volume = spacing ** 3
+    x, volume = _cube_grid(spacing)
 
     def velocity(y):
         return np.tile([1.0, 0.0, 0.0], (len(y), 1)) + sphere1(y) + sphere2(y)
@@ -236,9 +234,7 @@ def reflected_sampling(l, lone_density, R=PAPER_R, reflections=4, spacing=0.05):
         return np.tile([1.0, 0.0, 0.0], (len(y), 1)) + sphere2(y)
     origin = np.zeros((1, 3))
     spin = spin_of(incident, origin)[0]
-    rotation = np.cross(spin, x)
-    point = shear_torque(x, rotation, np.tile(spin, (len(x), 1)))[:, 2] @ \
-        (lone_density(np.linalg.norm(x, axis=1)) * volume)
+    point = _uniform_rotation_torque(x, spin, lone_density, volume)
     return dict(total=float(total), point=float(point), ratio=float(total / point),
                 incident_speed=float(incident(origin)[0, 0]), incident_spin=float(spin[2]))
 
@@ -285,15 +281,27 @@ class AxialField:
         return u, w
 
 
+def _cube_grid(spacing):
+    """Bin centres filling the cube of side 2 (the pair law's reach) about colloid 1, and the
+    bins' volume."""
+    g = np.arange(-1.0 + 0.5 * spacing, 1.0, spacing)
+    return np.stack(np.meshgrid(g, g, g, indexing='ij'), axis=-1).reshape(-1, 3), spacing ** 3
+
+
+def _uniform_rotation_torque(x, spin, lone_density, volume):
+    """The pair law's torque on colloid 1 from fluid with a lone colloid's density rotating
+    uniformly at `spin` (Faxen's point value, as the pair law weights it)."""
+    return shear_torque(x, np.cross(spin, x), np.tile(spin, (len(x), 1)))[:, 2] @ \
+        (lone_density(np.linalg.norm(x, axis=1)) * volume)
+
+
 def stokes_sampling(l, lone_density, R=PAPER_R, spacing=0.05, measured=None):
     """The pair law summed over Stokes flow about the pair (one reflection) with the superposed
     density, by parts (stream, colloid 1's disturbance, colloid 2's), and over a uniform
     rotation at Stokes flow's spin at colloid 1's centre with the lone density; their ratio.
     With measured (an AxialField), each colloid's disturbance is instead the measured flow
     about a lone colloid (the pair law's own near field)."""
-    g = np.arange(-1.0 + 0.5 * spacing, 1.0, spacing)
-    x = np.stack(np.meshgrid(g, g, g, indexing='ij'), axis=-1).reshape(-1, 3)
-    volume = spacing ** 3
+    x, volume = _cube_grid(spacing)
     U = 1.0
     count = superposed_density(x, lone_density, l) * volume
     c2 = np.array([0.0, l, 0.0])
@@ -307,9 +315,7 @@ def stokes_sampling(l, lone_density, R=PAPER_R, spacing=0.05, measured=None):
              'colloid 2': shear_torque(x, u2, w2)[:, 2] @ count}
     total = sum(parts.values())
     point_spin = stokes_disturbance(-c2[None, :], U, R)[1][0]
-    rotation = np.cross(point_spin, x)
-    count1 = lone_density(np.linalg.norm(x, axis=1)) * volume
-    point = shear_torque(x, rotation, np.tile(point_spin, (len(x), 1)))[:, 2] @ count1
+    point = _uniform_rotation_torque(x, point_spin, lone_density, volume)
     return dict(parts=parts, total=float(total), point=float(point), ratio=float(total / point),
                 faxen_spin=float(point_spin[2]))
 
