@@ -1,37 +1,69 @@
 #!/usr/bin/env bash
 # The seed check behind results/confirm.jsonl (README.md, "The largest steps again with
-# independent seeds"): the reference and each largest step of the GW and P scans at m = 0.01 and
-# 0.001 once per seed (11-14, 16 windows each), and the next smaller steps where the seeds
-# rejected one. The tables (python/accuracy_matrix.py) then take a largest step only where the
-# mean over the seeds is within tolerance. Usage:
-#   bash bench/accuracy/confirm.sh GW|P [SEEDS]     (SEEDS default "11 12 13 14"; split them
-#                                                    over two cores, e.g. "11 12" and "13 14")
-# About 25 CPU-minutes for GW, 90 for P (its m = 0.001 reference: 140,000 steps per seed).
+# independent seeds"): the reference and each integrator's largest step of the scans once per
+# seed (11-14, 16 windows each), and the next smaller steps where the seeds rejected one. The
+# tables (python/accuracy_matrix.py) then take a largest step only where the mean over the seeds
+# is within tolerance. Usage:
+#   bash bench/accuracy/confirm.sh GW|P|HS [SEEDS] [MASS ...]
+#       SEEDS default "11 12 13 14" (split them over two cores, e.g. "11 12" and "13 14");
+#       masses default: GW and P 0.01 0.001 (about 25 and 90 CPU-minutes), HS 1
+#       (also: GW and P 1, 0.1 and "diag", the diagonal scheme's largest steps at m = 0.01 and
+#       0.001 against those masses' references; HS 0.1)
 set -u
 cd "$(dirname "$0")"
+fluid=${1:?usage: confirm.sh GW|P|HS [SEEDS] [MASS ...]}
+seeds=${2:-11 12 13 14}
+shift; shift || true
+case "$fluid" in
+  GW|P) masses=${*:-0.01 0.001}; known="1 0.1 0.01 0.001 diag" ;;
+  HS) masses=${*:-1}; known="1 0.1" ;;
+  *) echo "confirm.sh: fluid must be GW, P or HS, got '$fluid'" >&2; exit 2 ;;
+esac
+for m in $masses; do    # every argument checked before the first run
+  case " $known " in
+    *" $m "*) ;;
+    *) echo "confirm.sh: no seed check for $fluid at m = '$m' (one of: $known)" >&2; exit 2 ;;
+  esac
+done
 PLUGIN=${PLUGIN:-/tmp/accuracy/etddpdplugin.so}
 . ../../tools/lammps_env.sh
 export LMP PLUGIN
-fluid=${1:?usage: confirm.sh GW|P [SEEDS]}
-seeds=${2:-11 12 13 14}
-C="/usr/bin/python3 run.py confirm --seeds $seeds"
+C="/usr/bin/python3 run.py confirm --seeds $seeds --fluid $fluid"
 scan() {    # mass integrator dt: one cell once per seed, no reference
   for seed in $seeds; do
     /usr/bin/python3 run.py scan --fluid "$fluid" --mass "$1" --integrator "$2" --dt "$3" --windows 16 \
       --seed "$seed" --out confirm.jsonl
   done
 }
-case "$fluid" in
-  GW)
-    $C --fluid GW --mass 0.01 --ref-dt 0.0001 --cell stock:0.0007 imp:0.005 imp:0.007 impv:0.005
-    $C --fluid GW --mass 0.001 --ref-dt 0.00003 --cell imp:0.001 impv:0.0015 stock:0.0001
+for m in $masses; do
+  case "$fluid:$m" in
+  GW:1)     $C --mass 1 --ref-dt 0.001 --cell stock:0.005 diag:0.005 imp:0.06 ;;
+  GW:0.1)   $C --mass 0.1 --ref-dt 0.0003 --cell stock:0.007 diag:0.003 imp:0.02 ;;
+  GW:0.01)
+    $C --mass 0.01 --ref-dt 0.0001 --cell stock:0.0007 imp:0.005 imp:0.007 impv:0.005 ;;
+  GW:0.001)
+    $C --mass 0.001 --ref-dt 0.00003 --cell imp:0.001 impv:0.0015 stock:0.0001
     scan 0.001 impv 0.001 ;;
-  P)
-    $C --fluid P --mass 0.01 --ref-dt 0.0001 --cell stock:0.0003 imp:0.005 impv:0.007
+  GW:diag)  scan 0.01 diag 0.0005; scan 0.001 diag 0.0001 ;;    # against the references above
+  P:1)      $C --mass 1 --ref-dt 0.001 --cell stock:0.003 imp:0.08 ;;
+  P:0.1)    $C --mass 0.1 --ref-dt 0.0003 --cell stock:0.002 diag:0.003 imp:0.02 ;;
+  P:0.01)
+    $C --mass 0.01 --ref-dt 0.0001 --cell stock:0.0003 imp:0.005 impv:0.007
     scan 0.01 impv 0.005
-    scan 0.01 impv 0.004
-    $C --fluid P --mass 0.001 --ref-dt 0.00003 --cell imp:0.0015 impv:0.002
+    scan 0.01 impv 0.004 ;;
+  P:diag)   scan 0.01 diag 0.0005 ;;
+  P:0.001)
+    # against velocity-Verlet at dt = 0.00001 (the scan's reference at 0.00003 is 0.5 % high in P)
+    $C --mass 0.001 --ref-dt 0.00003 --cell imp:0.0015 impv:0.002
+    for seed in $seeds; do    # seeds 11 and 13 were run
+      /usr/bin/python3 run.py scan --fluid P --mass 0.001 --integrator stock --dt 0.00001 --role ref \
+        --windows 8 --seed "$seed" --out confirm.jsonl
+    done
     scan 0.001 imp 0.001
     scan 0.001 impv 0.0015 ;;
-  *) echo "confirm.sh: fluid must be GW or P, got '$fluid'" >&2; exit 2 ;;
-esac
+  HS:1)     $C --mass 1 --ref-dt 0.0005 --cell stock:0.001 imp:0.005 ;;
+  # the references with dpd/gen's forces (run.py --ref-pair gen: dpd/ext's to round-off, a third
+  # of its cost)
+  HS:0.1)   $C --mass 0.1 --ref-dt 0.00005 --ref-pair gen --cell stock:0.0005 imp:0.02 impv:0.02 ;;
+  esac
+done

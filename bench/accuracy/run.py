@@ -136,8 +136,20 @@ def cmd_equilibrate(args):
         shutil.copy(os.path.join(work, "final.data"), f"/tmp/accuracy/{args.fluid}.data")
 
 
-def cmd_scan(args):
+def pair_for(args):
+    """The pair style of a run: the integrator's, or dpd/gen in place of the stock style for
+    velocity-Verlet (--pair gen: the same forces to round-off, a third of dpd/ext's cost at
+    s != 2; the expensive references and stock scans of HS below m = 0.1)."""
     pair, integrator = INTEGRATORS[args.integrator]
+    if getattr(args, "pair", None):
+        if integrator != "nve":
+            sys.exit(f"run.py: --pair applies to velocity-Verlet (stock, gennve), not '{args.integrator}'")
+        pair = args.pair
+    return pair, integrator
+
+
+def cmd_scan(args):
+    pair, integrator = pair_for(args)
     for dt in args.dt:
         # the MSD about 100 times a window, g(r) about every 0.01 time units, at a multiple of
         # the MSD's interval (so that the window, a multiple of both, stays near its length)
@@ -145,7 +157,7 @@ def cmd_scan(args):
         stride = msdstride * max(1, round(0.01 / dt / msdstride))
         nwin = steps_for(args.window, dt, stride, msdstride)
         implicit = "implicit" in integrator
-        work = os.path.join(WORK, tag_of("scan", args.fluid, args.mass, args.integrator, dt, args.seed, args.role))
+        work = os.path.join(WORK, tag_of("scan", args.fluid, args.mass, args.integrator, dt, args.seed, args.role, pair))
         if os.path.isdir(work):
             shutil.rmtree(work)
         variables = {"plugin": PLUGIN, "fluid": args.fluid, "pair": pair, "integrator": integrator,
@@ -192,15 +204,15 @@ def cmd_scan(args):
 def cmd_confirm(args):
     """The matrix's largest steps again with independent seeds: the reference and each cell once
     per seed (longer runs than the scans' by default) -> results/confirm.jsonl."""
-    runs = [("stock", args.ref_dt, "ref")]
+    runs = [("stock", args.ref_dt, "ref", args.ref_pair)]
     for spec in args.cell:
         name, dt = spec.split(":")
         if name not in INTEGRATORS:
             sys.exit(f"run.py confirm: unknown integrator '{name}' in --cell")
-        runs.append((name, float(dt), "cell"))
+        runs.append((name, float(dt), "cell", None))
     for seed in args.seeds:
-        for name, dt, role in runs:
-            cmd_scan(argparse.Namespace(fluid=args.fluid, mass=args.mass, integrator=name, dt=[dt],
+        for name, dt, role, pair in runs:
+            cmd_scan(argparse.Namespace(fluid=args.fluid, mass=args.mass, integrator=name, dt=[dt], pair=pair,
                                         windows=args.windows, window=0.25, equil=0.2, role=role, seed=seed,
                                         out="confirm.jsonl"))
 
@@ -311,10 +323,14 @@ def parse_args(argv=None):
     p.add_argument("--role", default="cell", choices=["cell", "ref"])
     p.add_argument("--seed", type=int, default=9823)
     p.add_argument("--out", default="scan.jsonl", help="file under results/ the records are appended to")
+    p.add_argument("--pair", choices=["gen", "stock"], default=None,
+                   help="velocity-Verlet only: gen runs dpd/gen in place of the stock pair style")
     p = sub.add_parser("confirm")
     p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
     p.add_argument("--ref-dt", type=float, required=True, help="the reference's step (stock)")
+    p.add_argument("--ref-pair", choices=["gen", "stock"], default=None,
+                   help="gen: the reference with dpd/gen (same forces, cheaper) in place of the stock style")
     p.add_argument("--cell", nargs="+", required=True, help="INTEGRATOR:DT")
     p.add_argument("--seeds", type=int, nargs="+", default=[11, 12, 13, 14])
     p.add_argument("--windows", type=int, default=16)
