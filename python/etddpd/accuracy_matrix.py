@@ -430,8 +430,8 @@ def _seed_means(records, key):
 def seed_check(records):
     """The largest steps of the matrix re-run with several seeds (results/confirm.jsonl): for
     each (fluid, mass, integrator, dt), the deviation of the mean over seeds from the mean of the
-    reference's seeds, with the standard error from both scatters. g(r) pools the windows of all
-    seeds. Returns Cells with n_seeds set."""
+    reference's seeds, with the standard error from both scatters; g(r) too, from each seed's mean
+    curve. Returns Cells with n_seeds set."""
     usable = [r for r in records if r.get("exit") == 0 and "error" not in r]
     # the reference of a fluid and mass is its smallest-step stock run; reference runs at a
     # larger step (an earlier, less accurate reference) are stock cells against it
@@ -459,9 +459,11 @@ def seed_check(records):
             # each seed's mean is one sample: the windows of one run are not independent enough
             cell.deviations[name] = _relative(_seed_means(group_records, key),
                                               _seed_means(ref_records, "T_blocks" if key == "T5_blocks" else key))
-        pooled = {"rdf_blocks": [b for r in group_records for b in r["rdf_blocks"]]}
-        pooled_ref = {"rdf_blocks": [b for r in ref_records for b in r["rdf_blocks"]]}
-        cell.deviations["g(r)"] = _rdf_deviation(pooled, pooled_ref)
+        # g(r) likewise: each seed's mean curve is one sample (the windows' scatter underestimates
+        # the error where a bin holds few pairs: HS below r = 0.15)
+        per_seed = {"rdf_blocks": [np.mean(r["rdf_blocks"], axis=0) for r in group_records]}
+        per_seed_ref = {"rdf_blocks": [np.mean(r["rdf_blocks"], axis=0) for r in ref_records]}
+        cell.deviations["g(r)"] = _rdf_deviation(per_seed, per_seed_ref)
         out.append(cell)
     return out
 

@@ -204,6 +204,23 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertIn("-3.00 +- ", table)
         self.assertTrue(table.endswith("| no |"))
 
+    def test_seed_check_g_of_r_error_from_the_seeds(self):
+        # every seed's two windows have the same g(r) (no window scatter), but the seeds' curves
+        # differ by +-0.02 about their mean: the cell's 0.04 offset, less two of the seeds' errors,
+        # is within 0.01, so g(r) passes; with the windows of all seeds pooled (six samples, a
+        # smaller error) it would fail
+        refs = [record("stock", 0.0001, 1.0, 20.0, 1.0, g_shift=s, role="ref") for s in (-0.02, 0.0, 0.02)]
+        cells = [record("imp", 0.003, 1.0, 20.0, 1.0, g_shift=0.04 + s, T5=1.0) for s in (-0.02, 0.0, 0.02)]
+        for r in refs + cells:
+            r["rdf_blocks"] = [r["rdf_blocks"][0], r["rdf_blocks"][0]]
+        checked = am.seed_check(refs + cells)
+        g = checked[0].deviations["g(r)"]
+        self.assertAlmostEqual(g.value, 0.04, places=12)
+        self.assertAlmostEqual(g.error, np.hypot(0.02 / 3**0.5, 0.02 / 3**0.5), places=12)
+        self.assertTrue(g.within(am.TOLERANCE["g(r)"]))
+        pooled = am._rdf_deviation({"rdf_blocks": [b for r in cells for b in r["rdf_blocks"]]},
+                                   {"rdf_blocks": [b for r in refs for b in r["rdf_blocks"]]})
+        self.assertFalse(pooled.within(am.TOLERANCE["g(r)"]))
     def test_a_largest_step_the_seeds_reject_gives_way(self):
         # the scan's largest step by the friction-step kBT is 0.003; four seeds there put D 3 %
         # low, so the row takes 0.002 (not re-run: no asterisk) and says why
