@@ -271,14 +271,20 @@ def _format_dt(dt):
 def _checked_step(scan, observables, dt, checked):
     """dt, or where the seed check (seed_check's cells of this fluid, mass and integrator) finds
     the mean over seeds outside tolerance there, the next smaller scanned step that passed its
-    scan and is not failed by a seed check; with whether that step was seed-checked."""
+    scan and is not failed by a seed check; then the largest of the larger steps that the seeds
+    pass in a row; with whether the step taken was seed-checked."""
     verdict = {c.dt: c.passes(observables) for c in checked}
-    if dt is None or verdict.get(dt, True):
-        return dt, dt in verdict
-    for cell in sorted(scan, key=lambda c: -c.dt):
-        if cell.dt < dt and cell.passes(observables) and verdict.get(cell.dt, True):
-            return cell.dt, cell.dt in verdict
-    return None, False
+    step = dt
+    if dt is not None and not verdict.get(dt, True):
+        step = next((cell.dt for cell in sorted(scan, key=lambda c: -c.dt)
+                     if cell.dt < dt and cell.passes(observables) and verdict.get(cell.dt, True)), None)
+    # larger steps that the seeds pass, every seed-checked step up to them passing too: the scan
+    # rejected them within its own noise (its windows' errors; HS's g(r))
+    for larger in sorted(d for d in verdict if d > (step or 0.0)):
+        if not verdict[larger]:
+            break
+        step = larger
+    return step, step in verdict
 
 
 def summary_rows(cell_list, costs=None, temperature="kBT", checked=None):
@@ -286,7 +292,8 @@ def summary_rows(cell_list, costs=None, temperature="kBT", checked=None):
     observable, the temperature taken as `temperature` ('kBT' end of step, or 'kBT_friction'),
     what limits it, its cost per time unit where timed, and the speed-up over stock + nve.
     checked: seed_check's cells; a largest step that they find outside tolerance gives way to
-    the next smaller one (row['seed_checked'] says whether the step taken was re-run)."""
+    the next smaller one, and larger steps they pass are taken (row['seed_checked'] says whether
+    the step taken was re-run)."""
     observables = [temperature, "P", "g(r)", "D"]
     rows = []
     for (fluid, mass), scans in sorted(group(cell_list).items()):
@@ -296,7 +303,8 @@ def summary_rows(cell_list, costs=None, temperature="kBT", checked=None):
             for name, scan in scans.items():
                 mine = [c for c in checked if (c.fluid, c.mass, c.integrator) == (fluid, mass, name)]
                 dt, seed_checked[name] = _checked_step(scan, observables, best[name], mine)
-                if dt != best[name]:    # the seeds moved it: what fails at the step they rejected
+                if best[name] is not None and (dt is None or dt < best[name]):
+                    # the seeds moved it down: what fails at the step they rejected
                     rejected = next(c for c in mine if c.dt == best[name])
                     seed_limited[name] = [n + " (seeds)" for n in observables
                                           if not rejected.deviations[n].within(TOLERANCE[n])]

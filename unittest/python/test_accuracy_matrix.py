@@ -240,6 +240,26 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertIn("| 0.0005* |", am.summary_table(list(rows.values())))
         self.assertAlmostEqual(rows["imp"]["step_ratio"], 4.0)
 
+    def test_larger_steps_the_seeds_pass_are_taken(self):
+        # the scan's largest step (friction-step kBT) is 0.003; four seeds pass 0.003 and 0.004
+        # and fail 0.005 (D 3 % low): the row takes 0.004, re-run (asterisk); with 0.003 failed
+        # by its seeds, 0.004's pass would not count (the row stays at the scan's 0.002)
+        refs = [record("stock", 0.0001, 1.0, 20.0, d, role="ref") for d in (0.99, 1.0, 1.01, 1.0)]
+        passing = [record("imp", dt, 0.985, 19.9, d, T5=1.0) for dt in (0.003, 0.004) for d in (0.99, 1.0, 1.01, 1.0)]
+        failing = [record("imp", 0.005, 0.985, 19.9, d, T5=1.0) for d in (0.96, 0.97, 0.98, 0.97)]
+        checked = am.seed_check(refs + passing + failing)
+        rows = {r["integrator"]: r for r in am.summary_rows(self.cells, temperature="kBT_friction",
+                                                            checked=checked)}
+        self.assertEqual(rows["imp"]["dt"], 0.004)
+        self.assertTrue(rows["imp"]["seed_checked"])
+        failed_at_3 = [record("imp", 0.003, 0.985, 19.9, d, T5=1.0) for d in (0.96, 0.97, 0.98, 0.97)]
+        passing_at_4 = [r for r in passing if r["dt"] == 0.004]
+        checked = am.seed_check(refs + failed_at_3 + passing_at_4)
+        rows = {r["integrator"]: r for r in am.summary_rows(self.cells, temperature="kBT_friction",
+                                                            checked=checked)}
+        self.assertEqual(rows["imp"]["dt"], 0.002)
+        self.assertEqual(rows["imp"]["limited_by"], ["D (seeds)"])
+
     def test_seed_check_takes_the_smallest_step_reference(self):
         # a reference at a smaller step joins later: the earlier one (larger step) becomes a stock
         # cell, 1 % high in P against it
