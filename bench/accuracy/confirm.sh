@@ -38,7 +38,9 @@ scan() {    # mass integrator dt: one cell once per seed, no reference
 for m in $masses; do
   case "$fluid:$m" in
   GW:1)     $C --mass 1 --ref-dt 0.001 --cell stock:0.005 diag:0.005 imp:0.06 ;;
-  GW:0.1)   $C --mass 0.1 --ref-dt 0.0003 --cell stock:0.007 diag:0.003 imp:0.02 ;;
+  GW:0.1)
+    $C --mass 0.1 --ref-dt 0.0003 --cell stock:0.007 diag:0.003 imp:0.02
+    scan 0.1 stock 0.005 ;;
   GW:0.01)
     $C --mass 0.01 --ref-dt 0.0001 --cell stock:0.0007 imp:0.005 imp:0.007 impv:0.005 ;;
   GW:0.001)
@@ -61,7 +63,10 @@ for m in $masses; do
     done
     scan 0.001 imp 0.001
     scan 0.001 impv 0.0015 ;;
-  HS:1)     $C --mass 1 --ref-dt 0.0005 --cell stock:0.001 imp:0.005 ;;
+  HS:1)
+    $C --mass 1 --ref-dt 0.0005 --cell stock:0.001 imp:0.005
+    scan 1 stock 0.0007
+    scan 1 imp 0.01; scan 1 imp 0.02 ;;    # beyond the scan's 0.005 (rejected on g(r) in its noise)
   # the references with dpd/gen's forces (run.py --ref-pair gen: dpd/ext's to round-off, a third
   # of its cost)
   HS:0.1)   $C --mass 0.1 --ref-dt 0.00005 --ref-pair gen --cell stock:0.0005 imp:0.02 impv:0.02 ;;
