@@ -5,9 +5,10 @@ Sub-commands (each appends one JSON line per LAMMPS run to bench/accuracy/result
 
   equilibrate  --fluid F                  random start -> /tmp/accuracy/F.data (m = 1, dpd/gen + nve)
   scan         --fluid F --mass M --integrator I --dt DT [DT ...] [--windows W --window T] [--role ref]
+               [--pair gen]  (velocity-Verlet with dpd/gen's forces in place of the stock style)
                equilibrium observables (in.accuracy): kBT, friction-step kBT, P, g(r), D
                -> results/scan.jsonl
-  confirm      --fluid F --mass M --ref-dt DT --cell I:DT [I:DT ...] [--seeds S ...] [--windows W]
+  confirm      --fluid F --mass M --ref-dt DT [--ref-pair gen] --cell I:DT [I:DT ...] [--seeds S ...] [--windows W]
                the reference and the cells once per seed (default 11-14, 16 windows) -> results/confirm.jsonl
   time         --fluid F --mass M --cell I:DT [I:DT ...] [--repeats R --steps N]
                cost: the cells alternated, R rounds, loop time of N steps each (no observables)
