@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """bench/accuracy's drivers refuse bad arguments before running anything: run.py's --pair only
 for velocity-Verlet (and it replaces the stock style by dpd/gen there), run.py confirm's unknown
-integrator, confirm.sh's unknown fluid or mass (exit 2 and a message; no LAMMPS needed)."""
+integrator, confirm.sh's unknown fluid or mass, viscosity_shear.sh's fluid and mass without a
+cell (exit 2 and a message; no LAMMPS needed)."""
 import argparse
 import importlib.util
 import os
@@ -44,10 +45,16 @@ class BadArguments(unittest.TestCase):
             run.main(["confirm", "--fluid", "GW", "--mass", "0.01", "--ref-dt", "0.0001", "--cell", "euler:0.001"])
         self.assertIn("unknown integrator 'euler'", str(caught.exception.code))
 
-    def confirm_sh(self, *args):
+    def confirm_sh(self, *args, script="confirm.sh"):
         env = dict(os.environ, LMP="/nonexistent/lmp")
-        return subprocess.run(["bash", os.path.join(BENCH, "confirm.sh"), *args], capture_output=True,
+        return subprocess.run(["bash", os.path.join(BENCH, script), *args], capture_output=True,
                               text=True, env=env, timeout=60)
+
+    def test_viscosity_shear_sh_unknown_cell(self):
+        for args, said in ((["0.5"], "got GW 0.5"), (["0.001", "P"], "got P 0.001"), (["1", "HS"], "got HS 1")):
+            done = self.confirm_sh(*args, script="viscosity_shear.sh")
+            self.assertEqual(done.returncode, 2, args)
+            self.assertIn(said, done.stderr)
 
     def test_confirm_sh_unknown_fluid(self):
         done = self.confirm_sh("XX")
