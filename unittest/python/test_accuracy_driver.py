@@ -45,24 +45,24 @@ class BadArguments(unittest.TestCase):
             run.main(["confirm", "--fluid", "GW", "--mass", "0.01", "--ref-dt", "0.0001", "--cell", "euler:0.001"])
         self.assertIn("unknown integrator 'euler'", str(caught.exception.code))
 
-    def confirm_sh(self, *args, script="confirm.sh"):
+    def bench_script(self, script, *args):
         env = dict(os.environ, LMP="/nonexistent/lmp")
         return subprocess.run(["bash", os.path.join(BENCH, script), *args], capture_output=True,
                               text=True, env=env, timeout=60)
 
     def test_viscosity_shear_sh_unknown_cell(self):
         for args, said in ((["0.5"], "got GW 0.5"), (["0.001", "P"], "got P 0.001"), (["1", "HS"], "got HS 1")):
-            done = self.confirm_sh(*args, script="viscosity_shear.sh")
+            done = self.bench_script("viscosity_shear.sh", *args)
             self.assertEqual(done.returncode, 2, args)
             self.assertIn(said, done.stderr)
 
     def test_confirm_sh_unknown_fluid(self):
-        done = self.confirm_sh("XX")
+        done = self.bench_script("confirm.sh", "XX")
         self.assertEqual(done.returncode, 2)
         self.assertIn("fluid must be GW, P or HS, got 'XX'", done.stderr)
 
     def test_confirm_sh_unknown_mass(self):
-        done = self.confirm_sh("HS", "11", "0.01")
+        done = self.bench_script("confirm.sh", "HS", "11", "0.01")
         self.assertEqual(done.returncode, 2)
         self.assertIn("no seed check for HS at m = '0.01'", done.stderr)
 
