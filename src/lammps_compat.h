@@ -35,15 +35,35 @@ namespace compat {
   // was built against.
   constexpr int first_version_with_crashing_wall_reflect_stochastic = 20260704;
 
+  // A neighbor request as its requestor may amend it until LAMMPS processes the requests
+  // (Neighbor::init, after every pair, fix and compute init).
+#if ETD_LAMMPS_HAS_ADD_REQUEST
+  using NeighRequestHandle = LAMMPS_NS::NeighRequest *;
+#else
+  using NeighRequestHandle = int;    // the index in neighbor->requests
+#endif
+
   // A half neighbor list with the default newton setting, as a plain pair style uses.
   template <typename Requestor>
-  inline void request_half_list(LAMMPS_NS::Neighbor *neighbor, Requestor *requestor, int instance)
+  inline NeighRequestHandle request_half_list(LAMMPS_NS::Neighbor *neighbor, Requestor *requestor,
+                                              int instance)
   {
 #if ETD_LAMMPS_HAS_ADD_REQUEST
     (void) instance;
-    neighbor->add_request(requestor);
+    return neighbor->add_request(requestor);
 #else
-    neighbor->request(requestor, instance);
+    return neighbor->request(requestor, instance);
+#endif
+  }
+
+  // Turns a request made this init into a newton-off list whatever the newton setting.
+  inline void make_request_newton_off(LAMMPS_NS::Neighbor *neighbor, NeighRequestHandle request)
+  {
+#if ETD_LAMMPS_HAS_ADD_REQUEST
+    (void) neighbor;
+    request->apply_flags(LAMMPS_NS::NeighConst::REQ_NEWTON_OFF);
+#else
+    neighbor->requests[request]->newton = 2;
 #endif
   }
 

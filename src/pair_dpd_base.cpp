@@ -19,7 +19,8 @@ PairDPDBase::PairDPDBase(LAMMPS *lmp, const char *style, bool rotation_) :
     Pair(lmp), style_name(style), rotation(rotation_),
     split_values(rotation_ ? FORCE_SPLIT_VALUES + TORQUE_SPLIT_VALUES : FORCE_SPLIT_VALUES),
     temperature(0.0), cut_global(0.0), seed(0), cut(nullptr), want_friction(false),
-    want_split(false), conservative_only(false), friction(nullptr), rot_friction(nullptr),
+    want_split(false), conservative_only(false), neigh_request(), list_newton_off(false),
+    fdotr_turned_off(false), friction(nullptr), rot_friction(nullptr),
     split(nullptr), nmax_extras(0)
 {
   writedata = 1;
@@ -105,10 +106,30 @@ void PairDPDBase::init_style()
     error->all(FLERR, "Pair style {} requires atom IDs (its noise is keyed on them)", style_name);
   if (update->dt <= 0.0)
     error->all(FLERR, "Pair style {} requires a positive timestep", style_name);
-  etd::compat::request_half_list(neighbor, this, instance_me);
+  neigh_request = etd::compat::request_half_list(neighbor, this, instance_me);
   // requests from the package's fixes and computes are renewed by their own init(), which
   // LAMMPS calls after this one: a run without fix etd gets the full DPD force back
   want_friction = want_split = conservative_only = false;
+  list_newton_off = false;
+  if (fdotr_turned_off) no_virial_fdotr_compute = 0;
+  fdotr_turned_off = false;
+}
+
+bool PairDPDBase::request_newton_off_list()
+{
+  if (list_newton_off) return true;
+  etd::compat::make_request_newton_off(neighbor, neigh_request);
+  list_newton_off = true;
+  if (!no_virial_fdotr_compute) {
+    no_virial_fdotr_compute = 1;
+    fdotr_turned_off = true;
+  }
+  return true;
+}
+
+bool PairDPDBase::forces_on_ghosts() const
+{
+  return force->newton_pair && !list_newton_off;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -127,7 +148,7 @@ bool PairDPDBase::prepare_extras()
     }
     if (want_split) memory->grow(split, nmax_extras, split_values, "pair:split");
   }
-  const int nzero = force->newton_pair ? atom->nlocal + atom->nghost : atom->nlocal;
+  const int nzero = forces_on_ghosts() ? atom->nlocal + atom->nghost : atom->nlocal;
   if (want_friction && nzero > 0) {
     std::memset(&friction[0][0], 0, sizeof(double) * FRICTION_VALUES * nzero);
     if (rotation) std::memset(&rot_friction[0][0], 0, sizeof(double) * FRICTION_VALUES * nzero);
@@ -138,7 +159,7 @@ bool PairDPDBase::prepare_extras()
 
 void PairDPDBase::finish_extras(bool extras)
 {
-  if (extras && force->newton_pair) etd::compat::reverse_comm(comm, this);
+  if (extras && forces_on_ghosts()) etd::compat::reverse_comm(comm, this);
 }
 
 int PairDPDBase::pack_reverse_comm(int n, int first, double *buf)

@@ -10,6 +10,7 @@
 
 #include "dpd_pair_interface.h"
 #include "dpd_random.h"
+#include "lammps_compat.h"
 #include "pair.h"
 
 #include <vector>
@@ -39,6 +40,7 @@ class PairDPDBase : public Pair, public etd::DpdPairInterface {
   double **rotational_friction() override { return rot_friction; }
   std::uint64_t noise_seed() const override { return static_cast<std::uint64_t>(seed); }
   void request_conservative_only() override { conservative_only = true; }
+  bool request_newton_off_list() override;
 
  protected:
   // style: the name in the messages ("dpd/gen"); rotation: the style acts on angular velocities
@@ -62,6 +64,11 @@ class PairDPDBase : public Pair, public etd::DpdPairInterface {
 
   bool want_friction, want_split;
   bool conservative_only;    // friction and noise (and torques) left to fix etd's implicit scheme
+  // the neighbor request of this init, and whether a user of the style made it newton off
+  // (then the force loops leave ghost atoms alone, and LAMMPS's f dot r virial, which needs
+  // their forces, is turned off until the next init)
+  etd::compat::NeighRequestHandle neigh_request;
+  bool list_newton_off, fdotr_turned_off;
   double **friction;         // [nmax][3] translational diagonal
   double **rot_friction;     // [nmax][3] rotational diagonal (with rotation only)
   double **split;            // [nmax][split_values]
@@ -78,6 +85,8 @@ class PairDPDBase : public Pair, public etd::DpdPairInterface {
   // compute(): the extras requested grown and zeroed before the force loop (true if any), and
   // after it the ghost atoms' contributions summed onto their owners
   bool prepare_extras();
+  // whether the force loop adds to ghost atoms (and their sums are communicated back)
+  bool forces_on_ghosts() const;
   void finish_extras(bool extras);
 };
 

@@ -222,7 +222,7 @@ template <int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE> void PairDPDGen:
   const tagint *tag = atom->tag;
   const int nlocal = atom->nlocal;
   const double *special_lj = force->special_lj;
-  const int newton_pair = force->newton_pair;
+  const int newton_pair = forces_on_ghosts();
   const double inv_sqrt_dt = 1.0 / std::sqrt(update->dt);
   const std::int64_t step = update->ntimestep;
 

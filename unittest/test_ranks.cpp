@@ -1,6 +1,9 @@
 // Rank-count independence: one program under mpirun -np 4 runs the same system on 1, 2 and 4
 // ranks (sub-communicators) and with newton on and off, and compares per-atom results by ID.
+#include "lammps.h"
 #include "lammps_fixture.h"
+#include "neigh_list.h"
+#include "neighbor.h"
 
 #include <gtest/gtest.h>
 
@@ -154,6 +157,40 @@ TEST_F(Ranks, ImplicitTrajectoryAgreesAcrossRankCountsToSolverTolerance)
   if (etdtest::world_rank() != 0) return;
   expect_agreement(results, 0, 6, 1e-7, "inertial");
   expect_agreement(results, 6, 6, 1e-7, "overdamped");
+}
+
+// The scheme needs a newton-off list on several ranks. With newton on, the pair style makes
+// its own list newton off for the run, and the fix gets a copy of it: one list built per
+// reneighboring, not two (the second doubled a 2-rank step's neighbor time). The pair style's
+// forces then stay on owned atoms and its virial is summed pair by pair (LAMMPS's f dot r sum
+// needs the ghost forces): the pressure, the energy and the trajectory must not notice.
+TEST_F(Ranks, ImplicitBuildsOneNeighborListAndKeepsThePressure)
+{
+  std::vector<std::vector<double>> results;
+  for (const std::string newton : {"on", "off"})
+    for (int ranks : {1, 2, 4})
+      results.push_back(etdtest::on_ranks(ranks, [&](Lammps &l) {
+        l.cmds(fluid(newton));
+        l.cmds({"fix 1 all etd scheme implicit tol 1e-10",
+                "compute pair_press all pressure NULL pair",
+                "thermo_style custom step press c_pair_press pe", "run 3 post no"});
+        int built = 0;
+        const LAMMPS_NS::Neighbor *neighbor = l.lmp->neighbor;
+        for (int i = 0; i < neighbor->nlist; i++)
+          if (!neighbor->lists[i]->copy) built++;
+        auto values = velocities_and_positions(l);
+        values.insert(values.begin(), {l.thermo("press"), l.thermo("c_pair_press"),
+                                       l.thermo("pe"), static_cast<double>(built)});
+        return values;
+      }));
+  if (etdtest::world_rank() != 0) return;
+  for (size_t k = 0; k < results.size(); k++) {
+    EXPECT_EQ(results[k][3], 1.0) << "neighbor lists built, variant " << k;
+    for (int q = 0; q < 3; q++)
+      EXPECT_NEAR(results[k][q], results[0][q], 1e-7 * std::fabs(results[0][q]))
+          << "quantity " << q << " (press, pair pressure, pe), variant " << k;
+  }
+  expect_agreement(results, 0, 6, 1e-7, "trajectory");
 }
 
 // Slabs thinner than twice the neighbor cutoff (1.5 + skin 0.3 for the colloid-solvent pairs):

@@ -51,7 +51,8 @@ class BadArguments(unittest.TestCase):
                               text=True, env=env, timeout=60)
 
     def test_viscosity_shear_sh_unknown_cell(self):
-        for args, said in ((["0.5"], "got GW 0.5"), (["0.001", "P"], "got P 0.001"), (["1", "HS"], "got HS 1")):
+        for args, said in ((["0.5"], "got GW 0.5"), (["0.01", "P"], "got P 0.01"), (["0.01", "HS"], "got HS 0.01"),
+                           (["1", "XX"], "got XX 1")):
             done = self.bench_script("viscosity_shear.sh", *args)
             self.assertEqual(done.returncode, 2, args)
             self.assertIn(said, done.stderr)
