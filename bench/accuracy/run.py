@@ -13,6 +13,10 @@ Sub-commands (each appends one JSON line per LAMMPS run to bench/accuracy/result
   time         --fluid F --mass M --cell I:DT [I:DT ...] [--repeats R --steps N]
                cost: the cells alternated, R rounds, loop time of N steps each (no observables)
                -> results/timing.jsonl
+  derive-ref   --fluid F --mass M --static-from M0 --d-from M1 M2 [...]
+               a reference out of velocity-Verlet's reach: kBT, P and g(r) of the reference at M0
+               (mass-independent at equilibrium), D from a fit D0 - c m to the references at M1 M2 ...
+               -> results/scan.jsonl
   viscosity    --fluid F --mass M --integrator I --dt DT [--time T --equil T --force G]
                reverse Poiseuille flow (in.viscosity) -> results/viscosity.jsonl
 
@@ -271,6 +275,21 @@ def cmd_time_matrix(args):
                                     ranks=args.ranks, skin=0.3, newton="on"))
 
 
+def cmd_derive_ref(args):
+    from etddpd import accuracy_matrix as am
+    try:
+        record = am.derived_reference(am.read_jsonl(os.path.join(RESULTS, "scan.jsonl")), args.fluid,
+                                      args.mass, args.static_from, args.d_from)
+    except ValueError as error:
+        sys.exit(f"run.py derive-ref: {error}")
+    record["date"] = clock.strftime("%Y-%m-%d %H:%M")
+    fit = record["derived_from"]
+    print(f"derived reference {args.fluid} m={args.mass}: static from m={args.static_from}; D fit over "
+          f"m={fit['D_masses']}: means {fit['D_means']}, residuals {fit['D_fit_residuals']}, "
+          f"D({args.mass}) = {fit['D_at_mass']:.6f}")
+    append("scan.jsonl", record)
+
+
 def cmd_viscosity(args):
     pair, integrator = INTEGRATORS[args.integrator]
     if args.force is None:
@@ -355,6 +374,13 @@ def parse_args(argv=None):
     p.add_argument("--equil-steps", type=int, default=50)
     p.add_argument("--ranks", type=int, default=1)
     p.add_argument("--sitting", default=clock.strftime("%H%M"))
+    p = sub.add_parser("derive-ref")
+    p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
+    p.add_argument("--mass", type=float, required=True)
+    p.add_argument("--static-from", type=float, required=True,
+                   help="the mass whose reference gives kBT, P and g(r)")
+    p.add_argument("--d-from", type=float, nargs="+", required=True,
+                   help="the masses whose references' D are fitted by D0 - c m")
     p = sub.add_parser("viscosity")
     p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
@@ -372,7 +398,7 @@ def parse_args(argv=None):
 def main(argv=None):
     args = parse_args(argv)
     {"equilibrate": cmd_equilibrate, "scan": cmd_scan, "confirm": cmd_confirm, "time": cmd_time,
-     "time-matrix": cmd_time_matrix,
+     "time-matrix": cmd_time_matrix, "derive-ref": cmd_derive_ref,
      "viscosity": cmd_viscosity}[args.command](args)
 
 

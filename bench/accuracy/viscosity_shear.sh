@@ -13,11 +13,16 @@
 # Writes results/viscosity_shear/log.<cell>.<seed> (m = 0.001: log.m0.001.<cell>.<seed>) and
 # prints the RESULT lines. SEEDS (default "1 2 3 4") selects seeds, to split the work; RATE
 # (default 2) the shear rate (logs then log.[m0.001.]rate<RATE>.<cell>.<seed>); CELLS (default
-# all) the cells to run, e.g. CELLS="impv0.001"; SKIN (default 0.3) the neighbor skin.
-#   m = 1 and 0.1, and the P fluid (n = 4, a = 18.75, s = 1/2, stock dpd/ext) at m = 1 and 0.1:
-#   the reference, stock and the implicit scheme at the matrix's steps (logs log.[P.]m<mass>.*);
-#   a few minutes each
-# Usage: bash bench/accuracy/viscosity_shear.sh [0.01|0.001|1|0.1] [GW|P]
+# all) the cells to run, e.g. CELLS="impv0.001"; SKIN (default 0.3) the neighbor skin; TPROD
+# (default 4) the time units averaged (logs then log.[m...]tprod<TPROD>.<cell>.<seed>).
+#   m = 1 and 0.1, the P fluid (n = 4, a = 18.75, s = 1/2, stock dpd/ext) at m = 1, 0.1 and
+#   0.001, and the HS fluid (dpd/design eta 30 sc 500 density 4 cutoff 1.5: a = 3.5328,
+#   gamma = 6.971, s = 0.4244, rc = 1.5, stock dpd/ext) at m = 1 and 0.1: the reference, stock
+#   and the implicit scheme at the matrix's steps (logs log.[P.|HS.]m<mass>.*). Where the
+#   reference is costly (P m = 1 and 0.001, HS) it is velocity-Verlet with dpd/gen's forces
+#   (in.shear's integ nve: the same forces and the same integrator as stock, another noise
+#   stream), as the matrix's HS references are.
+# Usage: bash bench/accuracy/viscosity_shear.sh [0.01|0.001|1|0.1] [GW|P|HS]
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -28,31 +33,39 @@ which=${2:-GW}
 # step the seed check confirms; m = 0.001 the options at the default's step (at 0.0015 their
 # viscosity is 3-4 % high); P m = 0.1 at 0.015 and 0.01 (at 0.02 its viscosity is 2.8 % high)
 extras=""
+ref_integ=stock
 case "$which:$mass" in
   GW:0.01) prefix=""; steps=(0.0001 0.0007 0.007 0.005); extras="imp0.005:0.005" ;;
   GW:0.001) prefix="m0.001."; steps=(0.00003 0.0001 0.001 0.0015); extras="impv0.001:0.001" ;;
   GW:1) prefix="m1."; steps=(0.001 0.005 0.06 -) ;;
   GW:0.1) prefix="m0.1."; steps=(0.0003 0.005 0.02 -) ;;
-  P:1) prefix="P.m1."; steps=(0.001 0.003 0.08 -) ;;
+  P:1) prefix="P.m1."; steps=(0.001 0.003 0.08 -); ref_integ=nve ;;
   P:0.1) prefix="P.m0.1."; steps=(0.0003 0.002 0.02 -); extras="imp0.015:0.015 imp0.01:0.01" ;;
-  *) echo "viscosity_shear.sh: fluid and mass must be GW 0.01, 0.001, 1 or 0.1, or P 1 or 0.1;" \
-          "got $which $mass" >&2; exit 2 ;;
+  P:0.001) prefix="P.m0.001."; steps=(0.000015 0.00003 0.0015 0.002); extras="imp0.001:0.001"
+    ref_integ=nve ;;
+  HS:1) prefix="HS.m1."; steps=(0.0005 0.0007 0.02 -); ref_integ=nve ;;
+  HS:0.1) prefix="HS.m0.1."; steps=(0.00005 0.0005 0.02 0.02); ref_integ=nve ;;
+  *) echo "viscosity_shear.sh: fluid and mass must be GW 0.01, 0.001, 1 or 0.1, P 1, 0.1 or" \
+          "0.001, or HS 1 or 0.1; got $which $mass" >&2; exit 2 ;;
 esac
 . "$root/tools/lammps_env.sh"
 out="$here/results/viscosity_shear"
 mkdir -p "$out"
 cd "$out"
 case "$which" in    # in.shear's stock style: dpd at s = 2, dpd/ext otherwise
-  GW) fluid=(-var n 3 -var a 25 -var s 2) ;;
-  P) fluid=(-var n 4 -var a 18.75 -var s 0.5) ;;
+  GW) fluid=(-var n 3 -var a 25 -var s 2 -var gamma 4.5) ;;
+  P) fluid=(-var n 4 -var a 18.75 -var s 0.5 -var gamma 4.5) ;;
+  HS) fluid=(-var n 4 -var a 3.5328 -var s 0.424428900898052 -var gamma 6.97099466424446
+             -var rc 1.5) ;;
 esac
-fluid+=(-var gamma 4.5 -var kT 1.0 -var mass "$mass" -var tstart 0.5 -var tprod 4 -var skin "${SKIN:-0.3}")
+fluid+=(-var kT 1.0 -var mass "$mass" -var tstart 0.5 -var tprod "${TPROD:-4}" -var skin "${SKIN:-0.3}")
 # (at m = 1 and 0.1 the implicit scheme's steps with the streaming velocity, up to rate x L / 2
 # = 10, move atoms 0.2-0.6 per step: the fix stops with its missing-pair ERROR at skin 0.3;
 # SKIN=1.0 for m = 0.1; at m = 1, rate 2 heats velocity-Verlet's fluid to kBT 1.6)
 rate=${RATE:-2}
 fluid+=(-var rate "$rate")
 [ "$rate" = 2 ] || prefix="${prefix}rate$rate."
+[ "${TPROD:-4}" = 4 ] || prefix="${prefix}tprod$TPROD."
 run() {    # cell integ dt fixopts seed
   case " ${CELLS:-$1} " in *" $1 "*) ;; *) return 0 ;; esac
   local log="log.$prefix$1.$5"
@@ -61,7 +74,7 @@ run() {    # cell integ dt fixopts seed
   echo "$1 $(grep '^RESULT' "$log")"
 }
 for seed in ${SEEDS:-1 2 3 4}; do
-  run ref stock "${steps[0]}" "" $seed
+  run ref "$ref_integ" "${steps[0]}" "" $seed
   run stock stock "${steps[1]}" "" $seed
   run imp implicit "${steps[2]}" "" $seed
   [ "${steps[3]}" = - ] || run impv implicit "${steps[3]}" "tol 1e-4 start velocity" $seed

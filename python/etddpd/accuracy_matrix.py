@@ -117,6 +117,40 @@ def references(records):
     return refs
 
 
+def derived_reference(records, fluid, mass, static_from, diffusion_from):
+    """A reference where velocity-Verlet at a converged step is out of reach (HS at m = 0.001).
+    At equilibrium the configurations are Boltzmann-distributed whatever the mass, so kBT, P and
+    g(r) are those of the reference at mass `static_from` (its window blocks, copied). D is not:
+    it is fitted as D(m) = D0 - c m by least squares to the references' means at the masses
+    `diffusion_from` (at least two) and evaluated at `mass`; the blocks of D are those of
+    `static_from` scaled to that value, so that their scatter stays a measured one. Returns the
+    record (role 'ref', pair 'derived', with the fit's values), ready to append to scan.jsonl."""
+    refs = references(records)
+    missing = [m for m in [static_from, *diffusion_from] if (fluid, m) not in refs]
+    if missing:
+        raise ValueError(f"no reference of {fluid} at m = {missing}")
+    if len(set(diffusion_from)) < 2:
+        raise ValueError("the fit of D(m) needs references at two masses at least")
+    masses = np.array(sorted(set(diffusion_from)), dtype=float)
+    means = np.array([np.mean(refs[(fluid, m)]["D_blocks"]) for m in masses])
+    slope, intercept = np.polyfit(masses, means, 1)
+    fit = intercept + slope * masses
+    d_at_mass = intercept + slope * mass
+    source = refs[(fluid, static_from)]
+    scale = d_at_mass / np.mean(source["D_blocks"])
+    record = {key: source[key] for key in ("fluid", "equil", "windows", "nwin", "window_time", "stride",
+                                           "msdstride", "T_blocks", "P_blocks", "rdf_r", "rdf_blocks")}
+    record.update({"mass": mass, "integrator": "stock", "fix": "derived", "pair": "derived",
+                   "dt": None, "role": "ref", "seed": source["seed"],
+                   "exit": 0, "derived_from": {"static": [static_from, source["dt"]],
+                                                "D_masses": masses.tolist(), "D_means": means.tolist(),
+                                                "D_fit_residuals": (means - fit).tolist(),
+                                                "D_at_mass": d_at_mass},
+                   "D_blocks": (np.asarray(source["D_blocks"]) * scale).tolist(),
+                   "Dslope_blocks": (np.asarray(source.get("Dslope_blocks", source["D_blocks"])) * scale).tolist()})
+    return record
+
+
 def cells(records):
     """Every completed scan cell compared with its reference (the last record of each
     (fluid, mass, integrator, dt) counts). An earlier reference run at a larger step than the

@@ -272,6 +272,35 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertAlmostEqual(checked[("imp", 0.003)].deviations["P"].value, 0.0, places=12)
         self.assertEqual(checked[("imp", 0.003)].n_ref_seeds, 3)
 
+    def test_derived_reference_for_a_mass_out_of_reach(self):
+        # references at m = 1, 0.1, 0.01 with D = 0.0179 - 0.0022 m exactly; the one at 0.01
+        # has its own P, kBT and g(r)
+        records = []
+        for mass, pressure in ((1.0, 33.0), (0.1, 33.1), (0.01, 33.2)):
+            ref = record("stock", 0.0005 * mass, 1.0, pressure, 0.0179 - 0.0022 * mass, role="ref")
+            ref.update(fluid="HS", mass=mass, seed=9823, equil=1.0, windows=2, nwin=100, window_time=0.25,
+                       stride=10, msdstride=1)
+            records.append(ref)
+        derived = am.derived_reference(records, "HS", 0.001, 0.01, [1.0, 0.1, 0.01])
+        self.assertEqual((derived["role"], derived["mass"], derived["pair"]), ("ref", 0.001, "derived"))
+        self.assertEqual(derived["P_blocks"], records[2]["P_blocks"])
+        self.assertEqual(derived["rdf_blocks"], records[2]["rdf_blocks"])
+        self.assertAlmostEqual(np.mean(derived["D_blocks"]), 0.0179 - 0.0022 * 0.001, places=9)
+        self.assertAlmostEqual(max(abs(r) for r in derived["derived_from"]["D_fit_residuals"]), 0.0, places=12)
+        # the scatter of the blocks is the source's, scaled
+        source = records[2]["D_blocks"]
+        ratio = np.mean(derived["D_blocks"]) / np.mean(source)
+        self.assertAlmostEqual(derived["D_blocks"][1] - derived["D_blocks"][0], ratio * (source[1] - source[0]))
+        # a cell at that mass is compared with it
+        cell = record("imp", 0.005, 1.0, 33.2, 0.0179, role="cell")
+        cell.update(fluid="HS", mass=0.001)
+        compared = am.cells(records + [derived, cell])
+        self.assertEqual([(c.mass, c.integrator) for c in compared if c.mass == 0.001], [(0.001, "imp")])
+        with self.assertRaisesRegex(ValueError, "no reference of HS"):
+            am.derived_reference(records, "HS", 0.001, 0.05, [1.0, 0.1])
+        with self.assertRaisesRegex(ValueError, "two masses"):
+            am.derived_reference(records, "HS", 0.001, 0.01, [0.1])
+
     def test_main_reads_the_seed_check(self):
         import contextlib
         import io

@@ -1,0 +1,76 @@
+#!/usr/bin/python3
+"""The viscosity column's table from viscosity_shear.sh's logs: for each set of runs (the log
+name's prefix: fluid, mass, rate, time) and each cell, eta = -<P_xy> / rate as the mean over
+seeds with its standard error, kBT likewise, and the deviation from the set's reference (cell
+"ref") with the error of the difference.
+
+Usage: shear_table.py [DIR] [PREFIX ...]   (default DIR: results/viscosity_shear; PREFIX e.g.
+"HS.m1.rate0.2." selects sets; "" is the GW m = 0.01 rate-2 set)
+"""
+import math
+import os
+import re
+import sys
+
+LOG = re.compile(r"^log\.(?P<prefix>(?:[A-Za-z0-9.]+\.)?)(?P<cell>ref|stock|impv?[0-9.]*?)\.(?P<seed>[0-9]+)$")
+RESULT = re.compile(r"^RESULT .* kT (?P<kT>[-0-9.eE+]+) eta (?P<eta>[-0-9.eE+]+)")
+
+
+def read_runs(directory):
+    """{prefix: {cell: [(seed, eta, kT), ...]}} from the logs that finished (a RESULT line)."""
+    runs = {}
+    for name in sorted(os.listdir(directory)):
+        match = LOG.match(name)
+        if not match:
+            continue
+        with open(os.path.join(directory, name)) as log:
+            results = [RESULT.match(line) for line in log]
+        results = [r for r in results if r]
+        if not results:
+            continue
+        runs.setdefault(match["prefix"], {}).setdefault(match["cell"], []).append(
+            (int(match["seed"]), float(results[-1]["eta"]), float(results[-1]["kT"])))
+    return runs
+
+
+def mean_and_error(values):
+    n = len(values)
+    mean = sum(values) / n
+    if n < 2:
+        return mean, float("nan")
+    variance = sum((v - mean) ** 2 for v in values) / (n - 1)
+    return mean, math.sqrt(variance / n)
+
+
+def table(cells):
+    """Rows (cell, n, eta, eta error, kT, deviation % from ref, its error %), ref first."""
+    rows = []
+    ref = cells.get("ref")
+    ref_eta, ref_error = mean_and_error([r[1] for r in ref]) if ref else (None, None)
+    for cell in sorted(cells, key=lambda c: (c != "ref", c)):
+        etas = [r[1] for r in cells[cell]]
+        eta, error = mean_and_error(etas)
+        kT, _ = mean_and_error([r[2] for r in cells[cell]])
+        deviation = deviation_error = None
+        if ref and cell != "ref":
+            deviation = 100.0 * (eta / ref_eta - 1.0)
+            deviation_error = 100.0 * (eta / ref_eta) * math.hypot(error / eta, ref_error / ref_eta)
+        rows.append((cell, len(etas), eta, error, kT, deviation, deviation_error))
+    return rows
+
+
+def main(argv):
+    directory = argv[0] if argv else os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                  "results", "viscosity_shear")
+    runs = read_runs(directory)
+    for prefix in (argv[1:] if len(argv) > 1 else sorted(runs)):
+        print(f"\n{prefix or '(GW m = 0.01, rate 2)'}\n")
+        print("| cell | seeds | eta | kBT | against the reference |")
+        print("|---|---|---|---|---|")
+        for cell, n, eta, error, kT, deviation, deviation_error in table(runs.get(prefix, {})):
+            against = "" if deviation is None else f"{deviation:+.1f} +- {deviation_error:.1f} %"
+            print(f"| {cell} | {n} | {eta:.4g} +- {error:.2g} | {kT:.3f} | {against} |")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
