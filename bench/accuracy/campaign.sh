@@ -42,7 +42,8 @@ for m in $masses; do
     # (run.py derive-ref): kBT, P and g(r) of the m = 0.01 reference (the Boltzmann distribution
     # does not depend on the mass), D from D0 - c m fitted to the references at 1, 0.1 and 0.01
     # (residuals 0.01 %). Stock is not scanned (README.md: its step is bounded by the stiffness).
-    /usr/bin/python3 run.py derive-ref --fluid HS --mass 0.001 --static-from 0.01 --d-from 1 0.1 0.01
+    /usr/bin/python3 run.py derive-ref --fluid HS --mass 0.001 --static-from 0.01 --d-from 1 0.1 0.01 \
+      --seeds-from 0.1    # (and the seed check's, from m = 0.1's seeds; confirm.sh HS ... 0.001)
     # (from 0.003 on the fix stops with its missing-pair ERROR: at this mass the thermal speed,
     # 55, moves atoms 0.15 on average in a half drift at 0.005, beyond the skin 0.3)
     $R --fluid HS --mass 0.001 --integrator imp --dt 0.001 0.002 0.003

@@ -8,15 +8,16 @@ Sub-commands (each appends one JSON line per LAMMPS run to bench/accuracy/result
                [--pair gen]  (velocity-Verlet with dpd/gen's forces in place of the stock style)
                equilibrium observables (in.accuracy): kBT, friction-step kBT, P, g(r), D
                -> results/scan.jsonl
-  confirm      --fluid F --mass M --ref-dt DT [--ref-pair gen] --cell I:DT [I:DT ...] [--seeds S ...] [--windows W]
+  confirm      --fluid F --mass M (--ref-dt DT [--ref-pair gen] | --no-ref) --cell I:DT [I:DT ...] [--seeds S ...] [--windows W]
                the reference and the cells once per seed (default 11-14, 16 windows) -> results/confirm.jsonl
   time         --fluid F --mass M --cell I:DT [I:DT ...] [--repeats R --steps N]
                cost: the cells alternated, R rounds, loop time of N steps each (no observables)
                -> results/timing.jsonl
-  derive-ref   --fluid F --mass M --static-from M0 --d-from M1 M2 [...]
+  derive-ref   --fluid F --mass M --static-from M0 --d-from M1 M2 [...] [--seeds-from M3]
                a reference out of velocity-Verlet's reach: kBT, P and g(r) of the reference at M0
                (mass-independent at equilibrium), D from a fit D0 - c m to the references at M1 M2 ...
-               -> results/scan.jsonl
+               -> results/scan.jsonl; with --seeds-from, the seed check's references likewise from
+               the reference seeds at M3 -> results/confirm.jsonl
   viscosity    --fluid F --mass M --integrator I --dt DT [--time T --equil T --force G]
                reverse Poiseuille flow (in.viscosity) -> results/viscosity.jsonl
 
@@ -209,7 +210,9 @@ def cmd_scan(args):
 def cmd_confirm(args):
     """The matrix's largest steps again with independent seeds: the reference and each cell once
     per seed (longer runs than the scans' by default) -> results/confirm.jsonl."""
-    runs = [("stock", args.ref_dt, "ref", args.ref_pair)]
+    if (args.ref_dt is None) == (not args.no_ref):
+        sys.exit("run.py confirm: give --ref-dt, or --no-ref where the reference is derived (derive-ref --seeds)")
+    runs = [] if args.no_ref else [("stock", args.ref_dt, "ref", args.ref_pair)]
     for spec in args.cell:
         name, dt = spec.split(":")
         if name not in INTEGRATORS:
@@ -288,6 +291,16 @@ def cmd_derive_ref(args):
           f"m={fit['D_masses']}: means {fit['D_means']}, residuals {fit['D_fit_residuals']}, "
           f"D({args.mass}) = {fit['D_at_mass']:.6f}")
     append("scan.jsonl", record)
+    if args.seeds_from is not None:
+        try:
+            seeds = am.derived_seed_references(am.read_jsonl(os.path.join(RESULTS, "confirm.jsonl")), record,
+                                               args.seeds_from)
+        except ValueError as error:
+            sys.exit(f"run.py derive-ref: {error}")
+        for seed_record in seeds:
+            seed_record["date"] = record["date"]
+            append("confirm.jsonl", seed_record)
+        print(f"derived seed-check references from m={args.seeds_from}: seeds {[r['seed'] for r in seeds]}")
 
 
 def cmd_viscosity(args):
@@ -348,7 +361,9 @@ def parse_args(argv=None):
     p = sub.add_parser("confirm")
     p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
-    p.add_argument("--ref-dt", type=float, required=True, help="the reference's step (stock)")
+    p.add_argument("--ref-dt", type=float, default=None, help="the reference's step (stock)")
+    p.add_argument("--no-ref", action="store_true",
+                   help="run the cells only: the reference is derived from another mass's (derive-ref --seeds)")
     p.add_argument("--ref-pair", choices=["gen", "stock"], default=None,
                    help="gen: the reference with dpd/gen (same forces, cheaper) in place of the stock style")
     p.add_argument("--cell", nargs="+", required=True, help="INTEGRATOR:DT")
@@ -381,6 +396,8 @@ def parse_args(argv=None):
                    help="the mass whose reference gives kBT, P and g(r)")
     p.add_argument("--d-from", type=float, nargs="+", required=True,
                    help="the masses whose references' D are fitted by D0 - c m")
+    p.add_argument("--seeds-from", type=float, default=None,
+                   help="also the seed check's references (confirm.jsonl), from that mass's seeds")
     p = sub.add_parser("viscosity")
     p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)

@@ -4,15 +4,15 @@ name's prefix: fluid, mass, rate, time) and each cell, eta = -<P_xy> / rate as t
 seeds with its standard error, kBT likewise, and the deviation from the set's reference (cell
 "ref") with the error of the difference.
 
-Usage: shear_table.py [DIR] [PREFIX ...]   (default DIR: results/viscosity_shear; PREFIX e.g.
-"HS.m1.rate0.2." selects sets; "" is the GW m = 0.01 rate-2 set)
+Usage: shear_table.py [--dir DIR] [PREFIX ...]   (default DIR: results/viscosity_shear; PREFIX
+e.g. "HS.m1.rate0.2." selects sets, "" is the GW m = 0.01 rate-2 set; default: every set)
 """
 import math
 import os
 import re
 import sys
 
-LOG = re.compile(r"^log\.(?P<prefix>(?:[A-Za-z0-9.]+\.)?)(?P<cell>ref|stock|impv?[0-9.]*?)\.(?P<seed>[0-9]+)$")
+LOG = re.compile(r"^log\.(?P<prefix>(?:[A-Za-z0-9.]+\.)?)(?P<cell>(?:ref|stock|impv?)[0-9.]*?)\.(?P<seed>[0-9]+)$")
 RESULT = re.compile(r"^RESULT .* kT (?P<kT>[-0-9.eE+]+) eta (?P<eta>[-0-9.eE+]+)")
 
 
@@ -60,10 +60,11 @@ def table(cells):
 
 
 def main(argv):
-    directory = argv[0] if argv else os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                                  "results", "viscosity_shear")
+    directory = os.path.join(os.path.dirname(os.path.abspath(__file__)), "results", "viscosity_shear")
+    if argv[:1] == ["--dir"]:
+        directory, argv = argv[1], argv[2:]
     runs = read_runs(directory)
-    for prefix in (argv[1:] if len(argv) > 1 else sorted(runs)):
+    for prefix in (argv or sorted(runs)):
         print(f"\n{prefix or '(GW m = 0.01, rate 2)'}\n")
         print("| cell | seeds | eta | kBT | against the reference |")
         print("|---|---|---|---|---|")

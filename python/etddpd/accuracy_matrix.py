@@ -137,18 +137,38 @@ def derived_reference(records, fluid, mass, static_from, diffusion_from):
     fit = intercept + slope * masses
     d_at_mass = intercept + slope * mass
     source = refs[(fluid, static_from)]
-    scale = d_at_mass / np.mean(source["D_blocks"])
+    fit_info = {"D_masses": masses.tolist(), "D_means": means.tolist(),
+                "D_fit_residuals": (means - fit).tolist(), "D_at_mass": d_at_mass}
+    return _derived_record(source, mass, d_at_mass / np.mean(source["D_blocks"]), fit_info, dt=None)
+
+
+def _derived_record(source, mass, d_scale, fit_info, dt):
     record = {key: source[key] for key in ("fluid", "equil", "windows", "nwin", "window_time", "stride",
                                            "msdstride", "T_blocks", "P_blocks", "rdf_r", "rdf_blocks")}
     record.update({"mass": mass, "integrator": "stock", "fix": "derived", "pair": "derived",
-                   "dt": None, "role": "ref", "seed": source["seed"],
-                   "exit": 0, "derived_from": {"static": [static_from, source["dt"]],
-                                                "D_masses": masses.tolist(), "D_means": means.tolist(),
-                                                "D_fit_residuals": (means - fit).tolist(),
-                                                "D_at_mass": d_at_mass},
-                   "D_blocks": (np.asarray(source["D_blocks"]) * scale).tolist(),
-                   "Dslope_blocks": (np.asarray(source.get("Dslope_blocks", source["D_blocks"])) * scale).tolist()})
+                   "dt": dt, "role": "ref", "seed": source["seed"], "exit": 0,
+                   "derived_from": dict(fit_info, static=[source["mass"], source["dt"]]),
+                   "D_blocks": (np.asarray(source["D_blocks"]) * d_scale).tolist(),
+                   "Dslope_blocks": (np.asarray(source.get("Dslope_blocks", source["D_blocks"])) * d_scale).tolist()})
     return record
+
+
+def derived_seed_references(confirm_records, derived, static_from):
+    """The seed check's references for a mass out of reach: each seed's reference run at mass
+    `static_from` (results/confirm.jsonl) as derived_reference() makes the scan's, its D scaled
+    by the one factor that takes the seeds' mean to the fitted D of `derived` (that record).
+    Their step is the source's (the seed check takes each fluid and mass's smallest reference
+    step)."""
+    fluid, mass = derived["fluid"], derived["mass"]
+    usable = [r for r in confirm_records if r.get("exit") == 0 and "error" not in r and r.get("role") == "ref"
+              and r["fluid"] == fluid and r["mass"] == static_from]
+    if not usable:
+        raise ValueError(f"no seed-check reference of {fluid} at m = {static_from}")
+    smallest = min(r["dt"] for r in usable)
+    sources = [r for r in usable if r["dt"] == smallest]
+    d_at_mass = derived["derived_from"]["D_at_mass"]
+    scale = d_at_mass / np.mean([np.mean(r["D_blocks"]) for r in sources])
+    return [_derived_record(r, mass, scale, derived["derived_from"], dt=r["dt"]) for r in sources]
 
 
 def cells(records):

@@ -45,6 +45,12 @@ class BadArguments(unittest.TestCase):
             run.main(["confirm", "--fluid", "GW", "--mass", "0.01", "--ref-dt", "0.0001", "--cell", "euler:0.001"])
         self.assertIn("unknown integrator 'euler'", str(caught.exception.code))
 
+    def test_confirm_needs_one_reference_source(self):
+        for extra in ([], ["--ref-dt", "0.0001", "--no-ref"]):
+            with self.assertRaises(SystemExit) as caught:
+                run.main(["confirm", "--fluid", "HS", "--mass", "0.001", "--cell", "imp:0.002", *extra])
+            self.assertIn("give --ref-dt, or --no-ref", str(caught.exception.code))
+
     def bench_script(self, script, *args):
         env = dict(os.environ, LMP="/nonexistent/lmp")
         return subprocess.run(["bash", os.path.join(BENCH, script), *args], capture_output=True,

@@ -296,6 +296,22 @@ class AccuracyMatrix(unittest.TestCase):
         cell.update(fluid="HS", mass=0.001)
         compared = am.cells(records + [derived, cell])
         self.assertEqual([(c.mass, c.integrator) for c in compared if c.mass == 0.001], [(0.001, "imp")])
+        # the seed check's references: each seed of m = 0.1's (the smallest step only), D scaled
+        # by one factor to the fitted value
+        confirm = []
+        for seed, d in ((11, 0.0176), (12, 0.0178)):
+            for dt in (0.00005, 0.0005):
+                ref = record("stock", dt, 1.0, 33.0 + seed, d, role="ref")
+                ref.update(fluid="HS", mass=0.1, seed=seed, equil=0.2, windows=2, nwin=100, window_time=0.25,
+                           stride=10, msdstride=1)
+                confirm.append(ref)
+        seeds = am.derived_seed_references(confirm, derived, 0.1)
+        self.assertEqual([(r["seed"], r["dt"], r["mass"]) for r in seeds], [(11, 0.00005, 0.001), (12, 0.00005, 0.001)])
+        self.assertEqual(seeds[1]["P_blocks"], confirm[2]["P_blocks"])
+        self.assertAlmostEqual(np.mean([np.mean(r["D_blocks"]) for r in seeds]), 0.0179 - 0.0022 * 0.001, places=9)
+        self.assertAlmostEqual(np.mean(seeds[1]["D_blocks"]) / np.mean(seeds[0]["D_blocks"]), 0.0178 / 0.0176)
+        with self.assertRaisesRegex(ValueError, "no seed-check reference of HS at m = 1.0"):
+            am.derived_seed_references(confirm, derived, 1.0)
         with self.assertRaisesRegex(ValueError, "no reference of HS"):
             am.derived_reference(records, "HS", 0.001, 0.05, [1.0, 0.1])
         with self.assertRaisesRegex(ValueError, "two masses"):

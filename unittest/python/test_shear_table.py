@@ -1,0 +1,51 @@
+#!/usr/bin/python3
+"""bench/accuracy/shear_table.py on synthetic viscosity_shear.sh logs: sets split by the log
+name's prefix, cells by name, the mean over seeds with its standard error, the deviation from
+the set's reference with the error of the ratio; unfinished logs (no RESULT line) left out."""
+import importlib.util
+import math
+import os
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+spec = importlib.util.spec_from_file_location(
+    "shear_table", os.path.join(HERE, "..", "..", "bench", "accuracy", "shear_table.py"))
+shear_table = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(shear_table)
+
+
+def write_log(directory, name, eta, kT=1.0):
+    with open(os.path.join(directory, name), "w") as log:
+        log.write("LAMMPS (29 Sep 2021)\n")
+        if eta is not None:
+            log.write(f"RESULT integ stock dt 0.001 rate 0.5 plane xy seed 1 kT {kT} eta {eta} slope 0.5\n")
+
+
+class ShearTable(unittest.TestCase):
+    def test_sets_cells_and_deviation(self):
+        with tempfile.TemporaryDirectory() as directory:
+            for seed, eta in ((1, 1.0), (2, 1.2)):
+                write_log(directory, f"log.HS.m1.rate0.2.ref.{seed}", eta)
+            for seed, eta in ((1, 0.9), (2, 1.0)):
+                write_log(directory, f"log.HS.m1.rate0.2.imp0.04.{seed}", eta, kT=0.98)
+            write_log(directory, "log.HS.m1.rate0.2.stock.1", None)    # still running
+            write_log(directory, "log.HS.m1.rate0.2.stock0.003.1", 1.05)
+            write_log(directory, "log.ref.1", 0.16)                    # the GW m = 0.01 set
+            runs = shear_table.read_runs(directory)
+            self.assertEqual(sorted(runs), ["", "HS.m1.rate0.2."])
+            self.assertEqual(sorted(runs["HS.m1.rate0.2."]), ["imp0.04", "ref", "stock0.003"])
+            rows = {row[0]: row for row in shear_table.table(runs["HS.m1.rate0.2."])}
+            cell, n, eta, error, kT, deviation, deviation_error = rows["imp0.04"]
+            self.assertEqual(n, 2)
+            self.assertAlmostEqual(eta, 0.95)
+            self.assertAlmostEqual(error, 0.05)    # |a - b| / 2 for two seeds
+            self.assertAlmostEqual(kT, 0.98)
+            self.assertAlmostEqual(deviation, 100 * (0.95 / 1.1 - 1))
+            expected = 100 * (0.95 / 1.1) * math.hypot(0.05 / 0.95, 0.1 / 1.1)
+            self.assertAlmostEqual(deviation_error, expected)
+            self.assertIsNone(rows["ref"][5])
+
+
+if __name__ == "__main__":
+    unittest.main()
