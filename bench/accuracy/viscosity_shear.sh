@@ -29,9 +29,12 @@ root=$(cd "$here/../.." && pwd)
 mass=${1:-0.01}
 which=${2:-GW}
 # steps: reference, stock, implicit, implicit with the options ("-": not in the matrix);
-# extras: further cells, name:dt (stock* velocity-Verlet, impv* the implicit scheme with the
-# options, others the default implicit scheme): GW m = 1 stock at 0.003 and the implicit scheme at
-# 0.04 (at their equilibrium steps the viscosity is 3.8 and 2.0 % low); m = 0.01 the default at the
+# extras: further cells, name:dt (stock* velocity-Verlet, ref* the reference's integrator at
+# another step, impv* the implicit scheme with the options, others the default implicit
+# scheme, e.g. "ref0.0000075:0.0000075"): P m = 0.001 the implicit scheme at 0.001 and 0.0005;
+# GW m = 1 stock at 0.003 and the implicit scheme at
+# 0.04 (at their equilibrium steps the viscosity is 3.8 and 2.0 % low), P m = 1 the implicit
+# scheme at 0.06 and 0.04 (+3.2 % at 0.08); m = 0.01 the default at the
 # step the seed check confirms; m = 0.001 the options at the default's step (at 0.0015 their
 # viscosity is 3-4 % high); P m = 0.1 at 0.015 and 0.01 (at 0.02 its viscosity is 2.8 % high)
 extras=""
@@ -41,9 +44,10 @@ case "$which:$mass" in
   GW:0.001) prefix="m0.001."; steps=(0.00003 0.0001 0.001 0.0015); extras="impv0.001:0.001" ;;
   GW:1) prefix="m1."; steps=(0.001 0.005 0.06 -); extras="stock0.003:0.003 imp0.04:0.04" ;;
   GW:0.1) prefix="m0.1."; steps=(0.0003 0.005 0.02 -) ;;
-  P:1) prefix="P.m1."; steps=(0.001 0.003 0.08 -); ref_integ=nve ;;
+  P:1) prefix="P.m1."; steps=(0.001 0.003 0.08 -); extras="imp0.06:0.06 imp0.04:0.04"; ref_integ=nve ;;
   P:0.1) prefix="P.m0.1."; steps=(0.0003 0.002 0.02 -); extras="imp0.015:0.015 imp0.01:0.01" ;;
-  P:0.001) prefix="P.m0.001."; steps=(0.000015 0.00003 0.0015 0.002); extras="imp0.001:0.001"
+  P:0.001) prefix="P.m0.001."; steps=(0.000015 0.00003 0.0015 0.002)
+    extras="imp0.001:0.001 imp0.0005:0.0005"
     ref_integ=nve ;;
   HS:1) prefix="HS.m1."; steps=(0.0005 0.0007 0.02 -); ref_integ=nve ;;
   HS:0.1) prefix="HS.m0.1."; steps=(0.00005 0.0005 0.02 0.02); ref_integ=nve ;;
@@ -82,7 +86,8 @@ for seed in ${SEEDS:-1 2 3 4}; do
   [ "${steps[3]}" = - ] || run impv implicit "${steps[3]}" "tol 1e-4 start velocity" $seed
   for extra in $extras; do
     integ=implicit opts=""
-    case "$extra" in impv*) opts="tol 1e-4 start velocity" ;; stock*) integ=stock ;; esac
+    case "$extra" in impv*) opts="tol 1e-4 start velocity" ;; stock*) integ=stock ;;
+                     ref*) integ=$ref_integ ;; esac
     run "${extra%%:*}" "$integ" "${extra#*:}" "$opts" $seed
   done
 done

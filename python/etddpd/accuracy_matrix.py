@@ -181,7 +181,8 @@ def cells(records):
         if record.get("exit") != 0 or "error" in record:
             continue
         if record.get("role") != "cell" and (record.get("role") != "ref"
-                                             or record is refs.get((record["fluid"], record["mass"]))):
+                                             or record is refs.get((record["fluid"], record["mass"]))
+                                             or record.get("pair") == "derived"):    # no run of its own
             continue
         latest[(record["fluid"], record["mass"], record["integrator"], record["dt"])] = record
     out = []

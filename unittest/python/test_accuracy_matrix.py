@@ -294,7 +294,7 @@ class AccuracyMatrix(unittest.TestCase):
         # a cell at that mass is compared with it
         cell = record("imp", 0.005, 1.0, 33.2, 0.0179, role="cell")
         cell.update(fluid="HS", mass=0.001)
-        compared = am.cells(records + [derived, cell])
+        compared = am.cells(records + [derived, dict(derived), cell])    # derived twice: one is no cell
         self.assertEqual([(c.mass, c.integrator) for c in compared if c.mass == 0.001], [(0.001, "imp")])
         # the seed check's references: each seed of m = 0.1's (the smallest step only), D scaled
         # by one factor to the fitted value
