@@ -42,8 +42,8 @@ class DpdPairInterface {
   virtual void request_conservative_only() {}
   // Where the scheme needs a newton-off list (several ranks) and newton is on: the style's own
   // list made newton off for this run (its forces then stay on owned atoms and its virial is
-  // summed pair by pair), so that LAMMPS builds one list for both. False if it cannot.
-  virtual bool request_newton_off_list() { return false; }
+  // summed pair by pair), so that LAMMPS builds one list for both.
+  virtual void request_newton_off_list() {}
 
  protected:
   // never deleted through this interface; non-virtual so that it does not constrain the

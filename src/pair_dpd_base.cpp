@@ -115,16 +115,15 @@ void PairDPDBase::init_style()
   fdotr_turned_off = false;
 }
 
-bool PairDPDBase::request_newton_off_list()
+void PairDPDBase::request_newton_off_list()
 {
-  if (list_newton_off) return true;
+  if (list_newton_off) return;
   etd::compat::make_request_newton_off(neighbor, neigh_request);
   list_newton_off = true;
   if (!no_virial_fdotr_compute) {
     no_virial_fdotr_compute = 1;
     fdotr_turned_off = true;
   }
-  return true;
 }
 
 bool PairDPDBase::forces_on_ghosts() const

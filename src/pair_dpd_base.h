@@ -40,7 +40,7 @@ class PairDPDBase : public Pair, public etd::DpdPairInterface {
   double **rotational_friction() override { return rot_friction; }
   std::uint64_t noise_seed() const override { return static_cast<std::uint64_t>(seed); }
   void request_conservative_only() override { conservative_only = true; }
-  bool request_newton_off_list() override;
+  void request_newton_off_list() override;
 
  protected:
   // style: the name in the messages ("dpd/gen"); rotation: the style acts on angular velocities
