@@ -2,15 +2,17 @@
 """The viscosity column's table from viscosity_shear.sh's logs: for each set of runs (the log
 name's prefix: fluid, mass, rate, time) and each cell, eta = -<P_xy> / rate as the mean over
 seeds with its standard error, kBT likewise, and the deviation from the set's reference (cell
-"ref") with the error of the difference.
+"ref") with the error of the ratio (accuracy_matrix.relative_deviation, as in the matrix).
 
 Usage: shear_table.py [--dir DIR] [PREFIX ...]   (default DIR: results/viscosity_shear; PREFIX
 e.g. "HS.m1.rate0.2." selects sets, "" is the GW m = 0.01 rate-2 set; default: every set)
 """
-import math
 import os
 import re
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from etddpd.accuracy_matrix import mean_and_error, relative_deviation  # noqa: E402
 
 LOG = re.compile(r"^log\.(?P<prefix>(?:[A-Za-z0-9.]+\.)?)(?P<cell>(?:ref|stock|impv?)[0-9.]*?)\.(?P<seed>[0-9]+)$")
 RESULT = re.compile(r"^RESULT .* kT (?P<kT>[-0-9.eE+]+) eta (?P<eta>[-0-9.eE+]+)")
@@ -33,28 +35,18 @@ def read_runs(directory):
     return runs
 
 
-def mean_and_error(values):
-    n = len(values)
-    mean = sum(values) / n
-    if n < 2:
-        return mean, float("nan")
-    variance = sum((v - mean) ** 2 for v in values) / (n - 1)
-    return mean, math.sqrt(variance / n)
-
-
 def table(cells):
     """Rows (cell, n, eta, eta error, kT, deviation % from ref, its error %), ref first."""
     rows = []
-    ref = cells.get("ref")
-    ref_eta, ref_error = mean_and_error([r[1] for r in ref]) if ref else (None, None)
+    ref_etas = [r[1] for r in cells.get("ref", [])]
     for cell in sorted(cells, key=lambda c: (c != "ref", c)):
         etas = [r[1] for r in cells[cell]]
         eta, error = mean_and_error(etas)
         kT, _ = mean_and_error([r[2] for r in cells[cell]])
         deviation = deviation_error = None
-        if ref and cell != "ref":
-            deviation = 100.0 * (eta / ref_eta - 1.0)
-            deviation_error = 100.0 * (eta / ref_eta) * math.hypot(error / eta, ref_error / ref_eta)
+        if ref_etas and cell != "ref":
+            against = relative_deviation(etas, ref_etas)
+            deviation, deviation_error = 100.0 * against.value, 100.0 * against.error
         rows.append((cell, len(etas), eta, error, kT, deviation, deviation_error))
     return rows
 

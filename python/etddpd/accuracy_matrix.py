@@ -57,14 +57,16 @@ class Cell:
                    for name in observables if name in self.deviations)
 
 
-def _mean_error(blocks):
-    blocks = np.asarray(blocks, dtype=float)
-    return blocks.mean(), standard_error(blocks)
+def mean_and_error(samples):
+    """Mean of independent samples (windows, seeds) and its standard error (nan below two)."""
+    samples = np.asarray(samples, dtype=float)
+    return samples.mean(), standard_error(samples)
 
 
-def _relative(cell_blocks, ref_blocks):
-    mean, error = _mean_error(cell_blocks)
-    ref, ref_error = _mean_error(ref_blocks)
+def relative_deviation(cell_samples, ref_samples):
+    """The cell's mean relative to the reference's, minus one, with the error of that ratio."""
+    mean, error = mean_and_error(cell_samples)
+    ref, ref_error = mean_and_error(ref_samples)
     return Deviation(mean / ref - 1.0, np.hypot(error / ref, mean * ref_error / ref**2))
 
 
@@ -100,11 +102,11 @@ def compare(cell, ref):
     end-of-step kBT (the other integrators have one temperature)."""
     out = Cell(cell["fluid"], cell["mass"], cell["integrator"], cell["dt"],
                cg_iterations=cell.get("cg_iterations"))
-    out.deviations["kBT"] = _relative(cell["T_blocks"], ref["T_blocks"])
-    out.deviations["kBT_friction"] = _relative(cell.get("T5_blocks", cell["T_blocks"]), ref["T_blocks"])
-    out.deviations["P"] = _relative(cell["P_blocks"], ref["P_blocks"])
+    out.deviations["kBT"] = relative_deviation(cell["T_blocks"], ref["T_blocks"])
+    out.deviations["kBT_friction"] = relative_deviation(cell.get("T5_blocks", cell["T_blocks"]), ref["T_blocks"])
+    out.deviations["P"] = relative_deviation(cell["P_blocks"], ref["P_blocks"])
     out.deviations["g(r)"] = _rdf_deviation(cell, ref)
-    out.deviations["D"] = _relative(cell["D_blocks"], ref["D_blocks"])
+    out.deviations["D"] = relative_deviation(cell["D_blocks"], ref["D_blocks"])
     return out
 
 
@@ -520,7 +522,7 @@ def seed_check(records):
         for name, key in (("kBT", "T_blocks"), ("kBT_friction", "T5_blocks"), ("P", "P_blocks"),
                           ("D", "D_blocks")):
             # each seed's mean is one sample: the windows of one run are not independent enough
-            cell.deviations[name] = _relative(_seed_means(group_records, key),
+            cell.deviations[name] = relative_deviation(_seed_means(group_records, key),
                                               _seed_means(ref_records, "T_blocks" if key == "T5_blocks" else key))
         # g(r) likewise: each seed's mean curve is one sample (the windows' scatter underestimates
         # the error where a bin holds few pairs: HS below r = 0.15)
