@@ -8,7 +8,7 @@
 #       SEEDS default "11 12 13 14" (split them over two cores, e.g. "11 12" and "13 14");
 #       masses default: GW and P 0.01 0.001 (about 25 and 90 CPU-minutes), HS 1
 #       (also: GW and P 1, 0.1 and "diag", the diagonal scheme's largest steps at m = 0.01 and
-#       0.001 against those masses' references; HS 0.1 and 0.001, the latter against the
+#       0.001 against those masses' references; HS 0.1, and 0.01 and 0.001 against the
 #       references derived from m = 0.1's seeds: run.py derive-ref --seeds-from 0.1, campaign.sh)
 set -u
 cd "$(dirname "$0")"
@@ -17,7 +17,7 @@ seeds=${2:-11 12 13 14}
 shift; shift || true
 case "$fluid" in
   GW|P) masses=${*:-0.01 0.001}; known="1 0.1 0.01 0.001 diag" ;;
-  HS) masses=${*:-1}; known="1 0.1 0.001" ;;
+  HS) masses=${*:-1}; known="1 0.1 0.01 0.001" ;;
   *) echo "confirm.sh: fluid must be GW, P or HS, got '$fluid'" >&2; exit 2 ;;
 esac
 for m in $masses; do    # every argument checked before the first run
@@ -71,6 +71,13 @@ for m in $masses; do
   # the references with dpd/gen's forces (run.py --ref-pair gen: dpd/ext's to round-off, a third
   # of its cost)
   HS:0.1)   $C --mass 0.1 --ref-dt 0.00005 --ref-pair gen --cell stock:0.0005 imp:0.02 impv:0.02 ;;
+  HS:0.01)
+    # against references derived from m = 0.1's four seeds (kBT, P and g(r) as they are, D scaled
+    # to the fit D0 - c m): the m = 0.01 reference's step is the least converged of the matrix,
+    # and one of its seeds costs 27 CPU-minutes
+    /usr/bin/python3 run.py derive-ref --fluid HS --mass 0.01 --static-from 0.1 --d-from 1 0.1 0.01 \
+      --seeds-from 0.1 --seeds-only
+    $C --mass 0.01 --no-ref --cell imp:0.007 impv:0.007 ;;
   HS:0.001) $C --mass 0.001 --no-ref --cell imp:0.002 impv:0.002 ;;
   esac
 done

@@ -13,11 +13,13 @@ Sub-commands (each appends one JSON line per LAMMPS run to bench/accuracy/result
   time         --fluid F --mass M --cell I:DT [I:DT ...] [--repeats R --steps N]
                cost: the cells alternated, R rounds, loop time of N steps each (no observables)
                -> results/timing.jsonl
-  derive-ref   --fluid F --mass M --static-from M0 --d-from M1 M2 [...] [--seeds-from M3]
+  derive-ref   --fluid F --mass M --static-from M0 --d-from M1 M2 [...] [--seeds-from M3 [--seeds-only]]
                a reference out of velocity-Verlet's reach: kBT, P and g(r) of the reference at M0
                (mass-independent at equilibrium), D from a fit D0 - c m to the references at M1 M2 ...
                -> results/scan.jsonl; with --seeds-from, the seed check's references likewise from
-               the reference seeds at M3 -> results/confirm.jsonl
+               the reference seeds at M3 -> results/confirm.jsonl; --seeds-only: those alone,
+               where the scan has a reference of its own (HS m = 0.01, whose reference step is
+               the least converged of the matrix)
   viscosity    --fluid F --mass M --integrator I --dt DT [--time T --equil T --force G]
                reverse Poiseuille flow (in.viscosity) -> results/viscosity.jsonl
 
@@ -280,6 +282,8 @@ def cmd_time_matrix(args):
 
 def cmd_derive_ref(args):
     from etddpd import accuracy_matrix as am
+    if args.seeds_only and args.seeds_from is None:
+        sys.exit("run.py derive-ref: --seeds-only needs --seeds-from")
     try:
         record = am.derived_reference(am.read_jsonl(os.path.join(RESULTS, "scan.jsonl")), args.fluid,
                                       args.mass, args.static_from, args.d_from)
@@ -290,7 +294,8 @@ def cmd_derive_ref(args):
     print(f"derived reference {args.fluid} m={args.mass}: static from m={args.static_from}; D fit over "
           f"m={fit['D_masses']}: means {fit['D_means']}, residuals {fit['D_fit_residuals']}, "
           f"D({args.mass}) = {fit['D_at_mass']:.6f}")
-    append("scan.jsonl", record)
+    if not args.seeds_only:
+        append("scan.jsonl", record)
     if args.seeds_from is not None:
         try:
             seeds = am.derived_seed_references(am.read_jsonl(os.path.join(RESULTS, "confirm.jsonl")), record,
@@ -398,6 +403,8 @@ def parse_args(argv=None):
                    help="the masses whose references' D are fitted by D0 - c m")
     p.add_argument("--seeds-from", type=float, default=None,
                    help="also the seed check's references (confirm.jsonl), from that mass's seeds")
+    p.add_argument("--seeds-only", action="store_true",
+                   help="write the seed check's references only, not the scan's")
     p = sub.add_parser("viscosity")
     p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)

@@ -19,9 +19,12 @@
 #   0.001, and the HS fluid (dpd/design eta 30 sc 500 density 4 cutoff 1.5: a = 3.5328,
 #   gamma = 6.971, s = 0.4244, rc = 1.5, stock dpd/ext) at m = 1 and 0.1: the reference, stock
 #   and the implicit scheme at the matrix's steps (logs log.[P.|HS.]m<mass>.*). Where the
-#   reference is costly (P m = 1 and 0.001, HS) it is velocity-Verlet with dpd/gen's forces
-#   (in.shear's integ nve: the same forces and the same integrator as stock, another noise
-#   stream), as the matrix's HS references are.
+#   reference is costly (P m = 1, 0.01 and 0.001, HS) it is velocity-Verlet with dpd/gen's
+#   forces (in.shear's integ nve: the same forces and the same integrator as stock, another
+#   noise stream), as the matrix's HS references are.
+#   HS at m = 0.01 and 0.001: velocity-Verlet is out of reach (300,000 and 3 million steps a
+#   run), so only the implicit scheme runs, at its largest step and at a smaller one; its
+#   reference is the m = 0.1 set's (shear_table.py --ref-from; README.md, "Viscosity").
 # Usage: bash bench/accuracy/viscosity_shear.sh [0.01|0.001|1|0.1] [GW|P|HS]
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -31,28 +34,37 @@ which=${2:-GW}
 # steps: reference, stock, implicit, implicit with the options ("-": not in the matrix);
 # extras: further cells, name:dt (stock* velocity-Verlet, ref* the reference's integrator at
 # another step, impv* the implicit scheme with the options, others the default implicit
-# scheme, e.g. "ref0.0000075:0.0000075"): P m = 0.001 the implicit scheme at 0.001 and 0.0005;
+# scheme, diag* the diagonal scheme, e.g. "ref0.0000075:0.0000075"): the diagonal scheme at its
+# largest step where the matrix has one; P m = 0.001 the implicit scheme at 0.001 and 0.0005;
 # GW m = 1 stock at 0.003 and the implicit scheme at
 # 0.04 (at their equilibrium steps the viscosity is 3.8 and 2.0 % low), P m = 1 the implicit
 # scheme at 0.06 and 0.04 (+3.2 % at 0.08); m = 0.01 the default at the
 # step the seed check confirms; m = 0.001 the options at the default's step (at 0.0015 their
-# viscosity is 3-4 % high); P m = 0.1 at 0.015 and 0.01 (at 0.02 its viscosity is 2.8 % high)
+# viscosity is 3-4 % high); P m = 0.1 at 0.015 and 0.01 (at 0.02 its viscosity is 2.8 % high);
+# P m = 0.01 the implicit scheme at 0.004 and 0.003, the options at 0.003 (at 0.005 / 0.004 its
+# viscosity is 3-4 / 2 % high); HS m = 0.01 and 0.001 the implicit scheme at a step 3.5 and 2
+# times smaller (its convergence)
 extras=""
 ref_integ=stock
 case "$which:$mass" in
-  GW:0.01) prefix=""; steps=(0.0001 0.0007 0.007 0.005); extras="imp0.005:0.005" ;;
-  GW:0.001) prefix="m0.001."; steps=(0.00003 0.0001 0.001 0.0015); extras="impv0.001:0.001" ;;
-  GW:1) prefix="m1."; steps=(0.001 0.005 0.06 -); extras="stock0.003:0.003 imp0.04:0.04" ;;
-  GW:0.1) prefix="m0.1."; steps=(0.0003 0.005 0.02 -) ;;
+  GW:0.01) prefix=""; steps=(0.0001 0.0007 0.007 0.005); extras="imp0.005:0.005 diag0.0005:0.0005" ;;
+  GW:0.001) prefix="m0.001."; steps=(0.00003 0.0001 0.001 0.0015)
+    extras="impv0.001:0.001 diag0.0001:0.0001" ;;
+  GW:1) prefix="m1."; steps=(0.001 0.005 0.06 -); extras="stock0.003:0.003 imp0.04:0.04 diag0.005:0.005" ;;
+  GW:0.1) prefix="m0.1."; steps=(0.0003 0.005 0.02 -); extras="diag0.003:0.003" ;;
   P:1) prefix="P.m1."; steps=(0.001 0.003 0.08 -); extras="imp0.06:0.06 imp0.04:0.04"; ref_integ=nve ;;
-  P:0.1) prefix="P.m0.1."; steps=(0.0003 0.002 0.02 -); extras="imp0.015:0.015 imp0.01:0.01" ;;
+  P:0.1) prefix="P.m0.1."; steps=(0.0003 0.002 0.02 -); extras="imp0.015:0.015 imp0.01:0.01 diag0.003:0.003" ;;
+  P:0.01) prefix="P.m0.01."; steps=(0.0001 0.0003 0.005 0.004)
+    extras="diag0.0003:0.0003 imp0.004:0.004 imp0.003:0.003 impv0.003:0.003"; ref_integ=nve ;;
   P:0.001) prefix="P.m0.001."; steps=(0.000015 0.00003 0.0015 0.002)
-    extras="imp0.001:0.001 imp0.0005:0.0005"
+    extras="imp0.001:0.001 imp0.0005:0.0005 impv0.0015:0.0015"
     ref_integ=nve ;;
   HS:1) prefix="HS.m1."; steps=(0.0005 0.0007 0.02 -); ref_integ=nve ;;
   HS:0.1) prefix="HS.m0.1."; steps=(0.00005 0.0005 0.02 0.02); ref_integ=nve ;;
-  *) echo "viscosity_shear.sh: fluid and mass must be GW 0.01, 0.001, 1 or 0.1, P 1, 0.1 or" \
-          "0.001, or HS 1 or 0.1; got $which $mass" >&2; exit 2 ;;
+  HS:0.01) prefix="HS.m0.01."; steps=(- - 0.007 0.007); extras="imp0.002:0.002" ;;
+  HS:0.001) prefix="HS.m0.001."; steps=(- - 0.002 0.002); extras="imp0.001:0.001" ;;
+  *) echo "viscosity_shear.sh: fluid and mass must be GW 0.01, 0.001, 1 or 0.1, P 1, 0.1, 0.01 or" \
+          "0.001, or HS 1, 0.1, 0.01 or 0.001; got $which $mass" >&2; exit 2 ;;
 esac
 . "$root/tools/lammps_env.sh"
 out="$here/results/viscosity_shear"
@@ -72,8 +84,9 @@ rate=${RATE:-2}
 fluid+=(-var rate "$rate")
 [ "$rate" = 2 ] || prefix="${prefix}rate$rate."
 [ "${TPROD:-4}" = 4 ] || prefix="${prefix}tprod$TPROD."
-run() {    # cell integ dt fixopts seed
+run() {    # cell integ dt fixopts seed ("-" for dt: a cell this set does not run)
   case " ${CELLS:-$1} " in *" $1 "*) ;; *) return 0 ;; esac
+  [ "$3" != - ] || return 0
   local log="log.$prefix$1.$5"
   "$LMP" -in "$root/examples/shear/in.shear" -var plugin "$PLUGIN" "${fluid[@]}" -var integ "$2" \
     -var dt "$3" -var fixopts "$4" -var seed "$5" -log "$log" -screen none
@@ -83,11 +96,11 @@ for seed in ${SEEDS:-1 2 3 4}; do
   run ref "$ref_integ" "${steps[0]}" "" $seed
   run stock stock "${steps[1]}" "" $seed
   run imp implicit "${steps[2]}" "" $seed
-  [ "${steps[3]}" = - ] || run impv implicit "${steps[3]}" "tol 1e-4 start velocity" $seed
+  run impv implicit "${steps[3]}" "tol 1e-4 start velocity" $seed
   for extra in $extras; do
     integ=implicit opts=""
     case "$extra" in impv*) opts="tol 1e-4 start velocity" ;; stock*) integ=stock ;;
-                     ref*) integ=$ref_integ ;; esac
+                     diag*) integ=diag ;; ref*) integ=$ref_integ ;; esac
     run "${extra%%:*}" "$integ" "${extra#*:}" "$opts" $seed
   done
 done

@@ -51,13 +51,19 @@ class BadArguments(unittest.TestCase):
                 run.main(["confirm", "--fluid", "HS", "--mass", "0.001", "--cell", "imp:0.002", *extra])
             self.assertIn("give --ref-dt, or --no-ref", str(caught.exception.code))
 
+    def test_derive_ref_seeds_only_needs_seeds_from(self):
+        with self.assertRaises(SystemExit) as caught:
+            run.main(["derive-ref", "--fluid", "HS", "--mass", "0.01", "--static-from", "0.1",
+                      "--d-from", "1", "0.1", "0.01", "--seeds-only"])
+        self.assertIn("--seeds-only needs --seeds-from", str(caught.exception.code))
+
     def bench_script(self, script, *args):
         env = dict(os.environ, LMP="/nonexistent/lmp")
         return subprocess.run(["bash", os.path.join(BENCH, script), *args], capture_output=True,
                               text=True, env=env, timeout=60)
 
     def test_viscosity_shear_sh_unknown_cell(self):
-        for args, said in ((["0.5"], "got GW 0.5"), (["0.01", "P"], "got P 0.01"), (["0.01", "HS"], "got HS 0.01"),
+        for args, said in ((["0.5"], "got GW 0.5"), (["0.003", "P"], "got P 0.003"), (["0.5", "HS"], "got HS 0.5"),
                            (["1", "XX"], "got XX 1")):
             done = self.bench_script("viscosity_shear.sh", *args)
             self.assertEqual(done.returncode, 2, args)
@@ -69,9 +75,9 @@ class BadArguments(unittest.TestCase):
         self.assertIn("fluid must be GW, P or HS, got 'XX'", done.stderr)
 
     def test_confirm_sh_unknown_mass(self):
-        done = self.bench_script("confirm.sh", "HS", "11", "0.01")
+        done = self.bench_script("confirm.sh", "HS", "11", "0.003")
         self.assertEqual(done.returncode, 2)
-        self.assertIn("no seed check for HS at m = '0.01'", done.stderr)
+        self.assertIn("no seed check for HS at m = '0.003'", done.stderr)
 
 
 if __name__ == "__main__":

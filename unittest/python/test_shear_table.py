@@ -47,5 +47,31 @@ class ShearTable(unittest.TestCase):
             self.assertIsNone(rows["ref"][5])
 
 
+    def test_diagonal_cells_and_a_reference_from_another_set(self):
+        with tempfile.TemporaryDirectory() as directory:
+            for seed, eta in ((1, 28.0), (2, 30.0)):
+                write_log(directory, f"log.HS.m0.1.rate0.2.ref.{seed}", eta)
+            for seed, eta in ((1, 29.5), (2, 30.5)):
+                write_log(directory, f"log.HS.m0.01.rate0.2.imp.{seed}", eta)
+            write_log(directory, "log.m0.1.diag0.003.1", 0.33)
+            runs = shear_table.read_runs(directory)
+            self.assertEqual(sorted(runs["m0.1."]), ["diag0.003"])
+            own = {row[0]: row for row in shear_table.table(runs["HS.m0.01.rate0.2."])}
+            self.assertIsNone(own["imp"][5])    # no reference of its own
+            rows = {row[0]: row for row in shear_table.table(runs["HS.m0.01.rate0.2."],
+                                                             runs["HS.m0.1.rate0.2."]["ref"])}
+            self.assertAlmostEqual(rows["imp"][5], 100 * (30.0 / 29.0 - 1))
+
+    def test_reference_from_a_set_without_references_is_an_error(self):
+        with tempfile.TemporaryDirectory() as directory:
+            write_log(directory, "log.HS.m0.01.rate0.2.imp.1", 29.0)
+            with self.assertRaises(SystemExit) as stop:
+                shear_table.main(["--dir", directory, "--ref-from", "HS.m0.01.rate0.2.=HS.m0.1.rate0.2."])
+            self.assertIn("has no reference runs", str(stop.exception))
+            with self.assertRaises(SystemExit) as stop:
+                shear_table.main(["--dir", directory, "--ref-from", "HS.m0.01.rate0.2."])
+            self.assertIn("SET=REFSET", str(stop.exception))
+
+
 if __name__ == "__main__":
     unittest.main()
