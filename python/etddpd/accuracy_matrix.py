@@ -496,8 +496,17 @@ def seed_check(records):
     """The largest steps of the matrix re-run with several seeds (results/confirm.jsonl): for
     each (fluid, mass, integrator, dt), the deviation of the mean over seeds from the mean of the
     reference's seeds, with the standard error from both scatters; g(r) too, from each seed's mean
-    curve. Returns Cells with n_seeds set."""
+    curve. Returns Cells with n_seeds set. A seed run again (confirm.sh re-run, or derive-ref's
+    seed references written again) counts once, by its last record, as in cells()."""
     usable = [r for r in records if r.get("exit") == 0 and "error" not in r]
+    latest = {}
+    for index, record in enumerate(usable):
+        seed = record.get("seed")
+        key = (index,) if seed is None else (record["fluid"], record["mass"], record.get("role"),
+                                             record["integrator"], record["dt"], seed)
+        latest.pop(key, None)    # (re-inserted: the order of the records is kept)
+        latest[key] = record
+    usable = list(latest.values())
     # the reference of a fluid and mass is its smallest-step stock run; reference runs at a
     # larger step (an earlier, less accurate reference) are stock cells against it
     ref_dt = {}

@@ -204,6 +204,20 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertIn("-3.00 +- ", table)
         self.assertTrue(table.endswith("| no |"))
 
+    def test_a_seed_run_again_counts_once(self):
+        # seed 2 of the reference and seed 1 of the cell were run twice: the last record of each
+        # counts, so the check is the same as with one record per seed
+        def seeded(seed, *args, **kwargs):
+            return dict(record(*args, **kwargs), seed=seed)
+        refs = [seeded(s, "stock", 0.0001, 1.0, 20.0, d, role="ref") for s, d in ((1, 0.99), (2, 1.0), (3, 1.01))]
+        cell = [seeded(s, "imp", 0.007, 0.95, 19.9, d, T5=1.0) for s, d in ((1, 0.96), (2, 0.97), (3, 0.98))]
+        once = am.seed_check(refs + cell)[0]
+        again = [seeded(1, "imp", 0.007, 0.95, 19.9, 0.5, T5=1.0)] + refs + cell + [dict(refs[1])]
+        twice = am.seed_check(again)[0]
+        self.assertEqual((twice.n_seeds, twice.n_ref_seeds), (3, 3))
+        self.assertAlmostEqual(twice.deviations["D"].value, once.deviations["D"].value, places=12)
+        self.assertAlmostEqual(twice.deviations["D"].error, once.deviations["D"].error, places=12)
+
     def test_seed_check_g_of_r_error_from_the_seeds(self):
         # every seed's two windows have the same g(r) (no window scatter), but the seeds' curves
         # differ by +-0.02 about their mean: the cell's 0.04 offset, less two of the seeds' errors,
