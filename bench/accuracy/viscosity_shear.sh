@@ -15,8 +15,8 @@
 # (default 2) the shear rate (logs then log.[m0.001.]rate<RATE>.<cell>.<seed>); CELLS (default
 # all) the cells to run, e.g. CELLS="impv0.001"; SKIN (default 0.3) the neighbor skin; TPROD
 # (default 4) the time units averaged (logs then log.[m...]tprod<TPROD>.<cell>.<seed>).
-#   m = 1 and 0.1, the P fluid (n = 4, a = 18.75, s = 1/2, stock dpd/ext) at m = 1, 0.1 and
-#   0.001, and the HS fluid (dpd/design eta 30 sc 500 density 4 cutoff 1.5: a = 3.5328,
+#   m = 1 and 0.1, the P fluid (n = 4, a = 18.75, s = 1/2, stock dpd/ext) at m = 1, 0.1, 0.01
+#   and 0.001, and the HS fluid (dpd/design eta 30 sc 500 density 4 cutoff 1.5: a = 3.5328,
 #   gamma = 6.971, s = 0.4244, rc = 1.5, stock dpd/ext) at m = 1 and 0.1: the reference, stock
 #   and the implicit scheme at the matrix's steps (logs log.[P.|HS.]m<mass>.*). Where the
 #   reference is costly (P m = 1, 0.01 and 0.001, HS) it is velocity-Verlet with dpd/gen's
@@ -39,13 +39,13 @@ which=${2:-GW}
 # GW m = 1 stock and the diagonal scheme at 0.003 and the implicit scheme at 0.04 (at their
 # equilibrium steps the viscosity is 3.8, 2.1 and 2.0 % low), GW m = 0.1 the implicit scheme at
 # 0.015 and 0.01 (2.0 % low at 0.02) and the reference's integrator at 0.0001 (its
-# convergence), P m = 1 the implicit
-# scheme at 0.06 and 0.04 (+3.2 % at 0.08); m = 0.01 the default at the
-# step the seed check confirms; m = 0.001 the options at the default's step (at 0.0015 their
-# viscosity is 3-4 % high); P m = 0.1 at 0.015 and 0.01 (at 0.02 its viscosity is 2.8 % high);
-# P m = 0.01 the implicit scheme at 0.004 and 0.003, the options at 0.003 (at 0.005 / 0.004 its
-# viscosity is 2.7 / 1.7 % high); P m = 0.001 the options at 0.0015 (+3.3 % at 0.002); HS m = 0.01 and 0.001 the implicit scheme at a step 3.5 and 2
-# times smaller (its convergence)
+# convergence), P m = 1 the implicit scheme at 0.06 and 0.04 (+3.2 % at 0.08); m = 0.01 the
+# default at the step the seed check confirms; m = 0.001 the options at the default's step (at
+# 0.0015 their viscosity is 3-4 % high); P m = 0.1 at 0.015 and 0.01 (at 0.02 its viscosity is
+# 2.8 % high); P m = 0.01 the implicit scheme at 0.004 and 0.003, the options at 0.003 (at
+# 0.005 / 0.004 its viscosity is 2.7 / 1.7 % high); P m = 0.001 the options at 0.0015 (+3.3 %
+# at 0.002); HS m = 0.01 and 0.001 the implicit scheme at a step 3.5 and 2 times smaller (its
+# convergence)
 extras=""
 ref_integ=stock
 case "$which:$mass" in

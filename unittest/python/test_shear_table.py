@@ -46,7 +46,6 @@ class ShearTable(unittest.TestCase):
             self.assertAlmostEqual(deviation_error, expected)
             self.assertIsNone(rows["ref"][5])
 
-
     def test_diagonal_cells_and_a_reference_from_another_set(self):
         with tempfile.TemporaryDirectory() as directory:
             for seed, eta in ((1, 28.0), (2, 30.0)):
