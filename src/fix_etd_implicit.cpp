@@ -1,8 +1,14 @@
 // ETD-DPD: fix etd ... scheme implicit.
 //
-// Inertial (default), per step of length h = dt (a BAOAB-type splitting):
-//   v += h/2 F/m;  x += h/2 v;  solve (M + h/2 G) v' = (M - h/2 G) v + sqrt(h) B xi;
-//   x += h/2 v';  [LAMMPS: neighbors, forces F(x)];  v += h/2 F/m
+// Inertial (default), per step of length h = dt (BAOAB in its half-step, leapfrog form):
+//   v += h F/m;  x += h/2 v;  solve (M + h/2 G) v' = (M - h/2 G) v + sqrt(h) B xi;
+//   x += h/2 v';  [LAMMPS: neighbors, forces F(x)]
+// The trajectory is BAOAB's (B(h/2) A O A B(h/2), the closing half kick merged into the next
+// step's opening one); what differs is where the velocities are read. atom->v holds v', the
+// friction step's output, at the end of every step: in the harmonic limit its kinetic
+// temperature is exact at any step, while BAOAB's end-of-step velocity runs cool by about
+// h^2 <F^2> / (4 m kBT), which thermo, dumps and the kinetic stress would all see
+// (doc/fix_etd.rst, "Which velocities a step leaves").
 // F holds every non-dissipative force (the package's pair styles leave out their friction and
 // noise while this scheme runs). Overdamped (m -> 0):
 //   solve G v = F + B xi / sqrt(h);  x += h v
@@ -135,7 +141,7 @@ FixETDImplicit::~FixETDImplicit()
 
 int FixETDImplicit::setmask()
 {
-  return INITIAL_INTEGRATE | POST_INTEGRATE | FINAL_INTEGRATE | POST_NEIGHBOR | POST_RUN;
+  return INITIAL_INTEGRATE | POST_INTEGRATE | POST_NEIGHBOR | POST_RUN;
 }
 
 void FixETDImplicit::init()
@@ -342,7 +348,7 @@ void FixETDImplicit::initial_integrate(int)
     overdamped_step();
     return;
   }
-  kick(0.5);
+  kick(1.0);
   drift(0.5);
   // (friction_noise_step() brings the ghosts to the half-drifted positions)
   friction_noise_step();
@@ -368,11 +374,6 @@ void FixETDImplicit::post_integrate()
     for (int k = 0; k < 3; k++) lead[3 * i + k] = 0.5 * dt * (v[i][k] + kick * f[i][k]);
   }
   if (neighbor_safety.could_outrun(lmp, groupbit, lead)) next_reneighbor = update->ntimestep;
-}
-
-void FixETDImplicit::final_integrate()
-{
-  if (!overdamped) kick(0.5);
 }
 
 /* ---- the pair geometry of this step ---------------------------------------------------- */

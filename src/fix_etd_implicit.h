@@ -32,7 +32,6 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
   void post_integrate() override;
   void post_run() override;
   void initial_integrate(int) override;
-  void final_integrate() override;
   void reset_dt() override;
   double compute_vector(int) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;

@@ -2,7 +2,7 @@
 # Set up everything ETD-DPD needs on a Debian 12 machine, idempotently:
 #   1. Debian packages (compiler, CMake, Open MPI, GoogleTest, Random123, numpy/scipy/matplotlib)
 #   2. LAMMPS 29Sep2021 update 2 from Debian's source package, built as a shared library with
-#      MPI, PLUGIN, DPD-BASIC, MOLECULE, EXTRA-FIX and RIGID, installed into a cache prefix
+#      MPI, PLUGIN, DPD-BASIC, DPD-REACT (fix shardlow, the peer), MOLECULE, EXTRA-FIX and RIGID, installed into a cache prefix
 #      keyed by version and configuration (reused on the next call)
 #   3. the ETD-DPD plugin and its tests, built incrementally in ./build
 # Environment:
@@ -42,7 +42,7 @@ fi
 lammps_cmake_options=(
   -D CMAKE_BUILD_TYPE=Release -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=off
   -D LAMMPS_EXCEPTIONS=on -D PKG_PLUGIN=on -D PKG_DPD-BASIC=on -D PKG_MOLECULE=on
-  -D PKG_EXTRA-FIX=on -D PKG_RIGID=on -D PKG_EXTRA-PAIR=off
+  -D PKG_EXTRA-FIX=on -D PKG_RIGID=on -D PKG_DPD-REACT=on -D PKG_EXTRA-PAIR=off
 )
 suite=${ETD_DPD_LAMMPS:-bookworm}
 if [ -n "${LAMMPS_SOURCE:-}" ]; then
