@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The scans behind results/scan.jsonl (README.md). One line per cell: its dt list; "ref" runs are
-# stock velocity-Verlet at a small step with 16 windows. Usage:
+# stock velocity-Verlet at a small step with 16 windows; GW also scans LAMMPS's fix shardlow
+# (dpd/fdt is s = 2 only). Usage:
 #   bash bench/accuracy/campaign.sh FLUID [MASS ...]     FLUID = GW, P or HS; masses 1 0.1 0.01 0.001
 # (each fluid's lines are independent: run two fluids side by side on two cores).
 set -u
@@ -53,18 +54,21 @@ for m in $masses; do
     $R --fluid "$fluid" --mass 1 --integrator stock --dt 0.001 --role ref --windows 16
     $R --fluid "$fluid" --mass 1 --integrator stock --dt 0.002 0.003 0.005 0.01 0.02 0.03 0.04
     $R --fluid "$fluid" --mass 1 --integrator diag --dt 0.003 0.005 0.01 0.02 0.03 0.04
-    $R --fluid "$fluid" --mass 1 --integrator imp --dt 0.01 0.02 0.03 0.04 0.06 0.08 ;;
+    $R --fluid "$fluid" --mass 1 --integrator imp --dt 0.01 0.02 0.03 0.04 0.06 0.08
+    [ "$fluid" != GW ] || $R --fluid GW --mass 1 --integrator shardlow --dt 0.01 0.02 0.03 0.04 0.06 0.08 ;;
   *:0.1)
     $R --fluid "$fluid" --mass 0.1 --integrator stock --dt 0.0003 --role ref --windows 16
     $R --fluid "$fluid" --mass 0.1 --integrator stock --dt 0.001 0.0015 0.002 0.003 0.005 0.007 0.01
     $R --fluid "$fluid" --mass 0.1 --integrator diag --dt 0.001 0.002 0.003 0.005 0.007 0.01
-    $R --fluid "$fluid" --mass 0.1 --integrator imp --dt 0.005 0.007 0.01 0.015 0.02 0.03 0.04 ;;
+    $R --fluid "$fluid" --mass 0.1 --integrator imp --dt 0.005 0.007 0.01 0.015 0.02 0.03 0.04
+    [ "$fluid" != GW ] || $R --fluid GW --mass 0.1 --integrator shardlow --dt 0.003 0.005 0.007 0.01 0.015 0.02 0.03 ;;
   *:0.01)
     $R --fluid "$fluid" --mass 0.01 --integrator stock --dt 0.0001 --role ref --windows 16
     $R --fluid "$fluid" --mass 0.01 --integrator stock --dt 0.00015 0.0002 0.0003 0.0005 0.0007 0.001
     $R --fluid "$fluid" --mass 0.01 --integrator diag --dt 0.0002 0.0003 0.0005 0.001 0.002 0.003
     $R --fluid "$fluid" --mass 0.01 --integrator imp --dt 0.002 0.003 0.004 0.005 0.007 0.01
-    $R --fluid "$fluid" --mass 0.01 --integrator impv --dt 0.003 0.004 0.005 0.007 ;;
+    $R --fluid "$fluid" --mass 0.01 --integrator impv --dt 0.003 0.004 0.005 0.007
+    [ "$fluid" != GW ] || $R --fluid GW --mass 0.01 --integrator shardlow --dt 0.002 0.003 0.004 0.005 0.007 0.01 ;;
   *:0.001)
     # P: Gamma dt / m = 0.17 at 0.000015 (0.34 at 0.00003 left the pressure 0.5 % high)
     if [ "$fluid" = P ]; then
@@ -75,6 +79,7 @@ for m in $masses; do
     $R --fluid "$fluid" --mass 0.001 --integrator stock --dt 0.00005 0.00007 0.0001 0.00015 0.0002 0.0003
     $R --fluid "$fluid" --mass 0.001 --integrator diag --dt 0.00005 0.00007 0.0001 0.0002 0.0003 0.0005
     $R --fluid "$fluid" --mass 0.001 --integrator imp --dt 0.0005 0.0007 0.001 0.0015 0.002
-    $R --fluid "$fluid" --mass 0.001 --integrator impv --dt 0.0007 0.001 0.0015 0.002 ;;
+    $R --fluid "$fluid" --mass 0.001 --integrator impv --dt 0.0007 0.001 0.0015 0.002
+    [ "$fluid" != GW ] || $R --fluid GW --mass 0.001 --integrator shardlow --dt 0.0003 0.0005 0.0007 0.001 0.0015 ;;
   esac
 done

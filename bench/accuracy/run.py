@@ -25,7 +25,8 @@ Sub-commands (each appends one JSON line per LAMMPS run to bench/accuracy/result
 
 Integrators (I): stock = stock pair style (dpd for GW, dpd/ext for P and HS) + fix nve;
 diag = dpd/gen + fix etd; imp = dpd/gen + fix etd scheme implicit; impv = dpd/gen + fix etd
-scheme implicit tol 1e-4 start velocity.  LAMMPS runs with nice -n 5 on one rank; the plugin is
+scheme implicit tol 1e-4 start velocity; shardlow = LAMMPS's fix shardlow + fix nve with pair_style
+dpd/fdt (DPD-REACT; s = 2 only: GW and HG).  LAMMPS runs with nice -n 5 on one rank; the plugin is
 the copy /tmp/accuracy/etddpdplugin.so (copy it there first; the build folder's is rebuilt).
 """
 import argparse
@@ -59,6 +60,7 @@ INTEGRATORS = {
     "imp": ("gen", "etd scheme implicit"),
     "impv": ("gen", "etd scheme implicit tol 1e-4 start velocity"),
     "gennve": ("gen", "nve"),
+    "shardlow": ("fdt", "nve"),
 }
 
 
@@ -256,22 +258,21 @@ def cmd_time(args):
                   f"steps = {record['s_per_tu']:.2f} s per time unit (load {load:.2f})", flush=True)
 
 
-VISCOSITY_FORCE = {"GW": 0.02, "P": 0.3, "HS": 3.0}
+VISCOSITY_FORCE = {"GW": 0.02, "HG": 0.3, "P": 0.3, "HS": 3.0}
 
 
 def cmd_time_matrix(args):
-    """Times every integrator of each (fluid, mass) of the scans at its largest step (both
-    temperature criteria), alternated in rounds."""
+    """Times every integrator of each (fluid, mass) of the scans at its largest step, alternated
+    in rounds."""
     from etddpd import accuracy_matrix as am
     cell_list = am.cells(am.read_jsonl(os.path.join(RESULTS, "scan.jsonl")))
     confirm = os.path.join(RESULTS, "confirm.jsonl")
     checked = am.seed_check(am.read_jsonl(confirm)) if os.path.exists(confirm) else None
     steps = {}
-    for temperature in ("kBT", "kBT_friction"):
-        for row in am.summary_rows(cell_list, temperature=temperature, checked=checked):
-            if row["dt"] is not None and (not args.fluid or row["fluid"] in args.fluid) \
-                    and (not args.mass or row["mass"] in args.mass):
-                steps.setdefault((row["fluid"], row["mass"]), set()).add((row["integrator"], row["dt"]))
+    for row in am.summary_rows(cell_list, checked=checked):
+        if row["dt"] is not None and (not args.fluid or row["fluid"] in args.fluid) \
+                and (not args.mass or row["mass"] in args.mass):
+            steps.setdefault((row["fluid"], row["mass"]), set()).add((row["integrator"], row["dt"]))
     for (fluid, mass), cells in sorted(steps.items()):
         spec = [f"{name}:{dt}" for name, dt in sorted(cells)]
         print(f"time {fluid} m={mass}: {' '.join(spec)}", flush=True)
@@ -325,13 +326,13 @@ def cmd_viscosity(args):
     try:
         density = FLUIDS[args.fluid]["n"]
         profiles = read_ave_chunk(os.path.join(work, "profile.txt")).data
-        etas = []
-        for block in profiles:
-            eta, _ = fit_viscosity(block[:, 1], block[:, 3], args.force, 10.0, density)
-            etas.append(eta)
         mean_profile = np.mean(profiles, axis=0)
-        eta, fit_error = fit_viscosity(mean_profile[:, 1], mean_profile[:, 3], args.force, 10.0, density)
-        record.update({"eta": eta, "eta_fit_error": fit_error, "eta_blocks": etas})
+        # columns: chunk, z, count, vx (the velocities in v), displacement per step / dt
+        for column, key in ((3, "eta"), (4, "eta_disp")):
+            etas = [fit_viscosity(block[:, 1], block[:, column], args.force, 10.0, density)[0]
+                    for block in profiles]
+            eta, fit_error = fit_viscosity(mean_profile[:, 1], mean_profile[:, column], args.force, 10.0, density)
+            record.update({key: eta, key + "_fit_error": fit_error, key + "_blocks": etas})
         m = re.search(r"RESULT .*kBT=([0-9.]+)", text)
         record["kBT"] = float(m.group(1)) if m else None
     except (OSError, ValueError, IndexError) as error:
@@ -341,6 +342,7 @@ def cmd_viscosity(args):
         e = np.array(record["eta_blocks"])
         print(f"visc {args.fluid} m={args.mass} {args.integrator} dt={args.dt}: eta={record['eta']:.4f} "
               f"(fit +-{record['eta_fit_error']:.4f}, blocks {e.mean():.4f}+-{standard_error(e):.4f}) "
+              f"from displacements {record['eta_disp']:.4f} "
               f"kBT={record['kBT']} wall={wall:.0f}s", flush=True)
 
 
@@ -348,10 +350,10 @@ def parse_args(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("equilibrate")
-    p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
+    p.add_argument("--fluid", required=True, choices=["GW", "HG", "P", "HS"])
     p.add_argument("--time", type=float, default=5.0)
     p = sub.add_parser("scan")
-    p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
+    p.add_argument("--fluid", required=True, choices=["GW", "HG", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
     p.add_argument("--integrator", required=True, choices=sorted(INTEGRATORS))
     p.add_argument("--dt", type=float, nargs="+", required=True)
@@ -364,7 +366,7 @@ def parse_args(argv=None):
     p.add_argument("--pair", choices=["gen", "stock"], default=None,
                    help="velocity-Verlet only: gen runs dpd/gen in place of the stock pair style")
     p = sub.add_parser("confirm")
-    p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
+    p.add_argument("--fluid", required=True, choices=["GW", "HG", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
     p.add_argument("--ref-dt", type=float, default=None, help="the reference's step (stock)")
     p.add_argument("--no-ref", action="store_true",
@@ -375,7 +377,7 @@ def parse_args(argv=None):
     p.add_argument("--seeds", type=int, nargs="+", default=[11, 12, 13, 14])
     p.add_argument("--windows", type=int, default=16)
     p = sub.add_parser("time")
-    p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
+    p.add_argument("--fluid", required=True, choices=["GW", "HG", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
     p.add_argument("--cell", nargs="+", required=True, help="INTEGRATOR:DT")
     p.add_argument("--repeats", type=int, default=3)
@@ -387,7 +389,7 @@ def parse_args(argv=None):
                    help="off: one newton-off neighbor list for pair style and fix (tables use on)")
     p.add_argument("--sitting", default=clock.strftime("%H%M"))
     p = sub.add_parser("time-matrix")
-    p.add_argument("--fluid", nargs="*", choices=["GW", "P", "HS"])
+    p.add_argument("--fluid", nargs="*", choices=["GW", "HG", "P", "HS"])
     p.add_argument("--mass", type=float, nargs="*")
     p.add_argument("--repeats", type=int, default=3)
     p.add_argument("--steps", type=int, default=400)
@@ -395,7 +397,7 @@ def parse_args(argv=None):
     p.add_argument("--ranks", type=int, default=1)
     p.add_argument("--sitting", default=clock.strftime("%H%M"))
     p = sub.add_parser("derive-ref")
-    p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
+    p.add_argument("--fluid", required=True, choices=["GW", "HG", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
     p.add_argument("--static-from", type=float, required=True,
                    help="the mass whose reference gives kBT, P and g(r)")
@@ -406,7 +408,7 @@ def parse_args(argv=None):
     p.add_argument("--seeds-only", action="store_true",
                    help="write the seed check's references only, not the scan's")
     p = sub.add_parser("viscosity")
-    p.add_argument("--fluid", required=True, choices=["GW", "P", "HS"])
+    p.add_argument("--fluid", required=True, choices=["GW", "HG", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
     p.add_argument("--integrator", required=True, choices=sorted(INTEGRATORS))
     p.add_argument("--dt", type=float, required=True)

@@ -116,7 +116,24 @@ class AccuracyMatrix(unittest.TestCase):
         ]
         rows = {r["integrator"]: r for r in am.summary_rows(self.cells, am.cost_per_time_unit(timings))}
         self.assertAlmostEqual(rows["imp"]["speedup"], 2.5)
-        self.assertIn("| 2.50 |", am.summary_table(list(rows.values())))
+        self.assertIsNone(rows["imp"]["speedup_shardlow"])    # no peer timed
+        self.assertIn("| 2.50 | - |", am.summary_table(list(rows.values())))
+
+    def test_speedup_over_shardlow_at_its_own_largest_step(self):
+        records = scan_records() + [record("shardlow", 0.001, 1.002, 20.0, 1.01),
+                                    record("shardlow", 0.0015, 1.004, 20.0, 1.03)]    # D +3 %
+        timings = [
+            {"fluid": "GW", "mass": 0.01, "integrator": "stock", "dt": 0.0005, "exit": 0, "s_per_tu": 10.0},
+            {"fluid": "GW", "mass": 0.01, "integrator": "shardlow", "dt": 0.001, "exit": 0, "s_per_tu": 6.0},
+            {"fluid": "GW", "mass": 0.01, "integrator": "shardlow", "dt": 0.0015, "exit": 0, "s_per_tu": 4.0},
+            {"fluid": "GW", "mass": 0.01, "integrator": "imp", "dt": 0.002, "exit": 0, "s_per_tu": 4.0},
+        ]
+        rows = {r["integrator"]: r for r in am.summary_rows(am.cells(records), am.cost_per_time_unit(timings))}
+        self.assertEqual(rows["shardlow"]["dt"], 0.001)
+        self.assertEqual(rows["shardlow"]["limited_by"], ["D"])
+        self.assertAlmostEqual(rows["imp"]["speedup_shardlow"], 1.5)
+        self.assertAlmostEqual(rows["shardlow"]["speedup"], 10.0 / 6.0)
+        self.assertIn("| shardlow + nve (dpd/fdt) | 0.001 |", am.summary_table(list(rows.values())))
 
     def test_only_the_latest_sitting_of_a_fluid_and_mass_counts(self):
         # a later sitting (another machine, say) re-times this fluid and mass: its stock and its
@@ -335,7 +352,9 @@ class AccuracyMatrix(unittest.TestCase):
         import contextlib
         import io
         refs = [record("stock", 0.0001, 1.0, 20.0, d, role="ref") for d in (0.99, 1.0, 1.01)]
-        seeds = [record("imp", 0.003, 0.985, 19.9, d, T5=1.0) for d in (0.96, 0.97, 0.98)]
+        # the seeds reject the implicit scheme's largest step by LAMMPS's temp (0.002); its
+        # friction-step temperature (exact here) passes nothing: no table is judged by it
+        seeds = [record("imp", 0.002, 0.996, 19.9, d, T5=1.0) for d in (0.96, 0.97, 0.98)]
         with tempfile.TemporaryDirectory() as folder:
             for name, records in (("scan.jsonl", scan_records()), ("confirm.jsonl", refs + seeds)):
                 with open(os.path.join(folder, name), "w") as out:
@@ -346,8 +365,10 @@ class AccuracyMatrix(unittest.TestCase):
                 self.assertEqual(am.main([folder]), 0)
         text = printed.getvalue()
         self.assertIn("re-run with independent seeds", text)
-        self.assertIn("| GW | 0.01 | imp | 0.003 | 3 (3) |", text)
+        self.assertIn("| GW | 0.01 | imp | 0.002 | 3 (3) |", text)
         self.assertIn("D (seeds)", text)
+        self.assertNotIn("friction-step kBT as", text)
+        self.assertNotIn("| GW | 0.01 | etd implicit | 0.003", text)
 
 
 if __name__ == "__main__":
