@@ -52,7 +52,8 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
     max_iterations(200), dt(0.0), list(nullptr), list_newton_off(true), dofs(3),
     any_fixed_partner(false), partners_built(-1), partner_slots(0), comm_nslots(0),
     comm_positions(false), split_requested(false), split_rows(0), split(nullptr),
-    last_iterations(0), last_residual(0.0), iterations_sum(0.0), solves(0), predictor_steps(0)
+    last_iterations(0), last_residual(0.0), iterations_sum(0.0), solves(0), predictor_steps(0),
+    end_velocity(nullptr)
 {
   time_integrate = 1;
   force_reneighbor = 1;    // post_integrate() may ask for an early rebuild
@@ -61,6 +62,12 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
   size_vector = 5;
   extvector = 0;
   global_freq = 1;
+  // per atom: the velocity at the end of the step in BAOAB's sense, v + h/2 F/m (v holds the
+  // friction step's output): its mean is the streaming velocity, without v's offset of
+  // h/2 <F>/m under a steady force (doc/fix_etd.rst, "Which velocities a step leaves")
+  peratom_flag = 1;
+  size_peratom_cols = 3;
+  peratom_freq = 1;
   comm_forward = 9;    // positions and 3 values per atom (v), 6 with rotation (v, Omega)
   // the dissipative and random forces are this fix's, so is their virial (pressure, stress)
   virial_global_flag = virial_peratom_flag = 1;
@@ -127,8 +134,9 @@ FixETDImplicit::FixETDImplicit(LAMMPS *lmp, int narg, char **arg) :
   partners.reset(new etd::PartnerExchange(world));
 
   // per-atom split for compute dpd/split, kept with the atoms when they migrate or are sorted
-  maxexchange = 12;    // the split and the per-atom virial (vatom), which must travel too:
-                       // the atoms migrate and are sorted after the step that tallied them
+  maxexchange = 15;    // the split, the per-atom virial (vatom) and the end-of-step velocity,
+                       // which must travel too: the atoms migrate and are sorted after the
+                       // step that set them
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
 }
@@ -137,11 +145,12 @@ FixETDImplicit::~FixETDImplicit()
 {
   atom->delete_callback(id, Atom::GROW);
   memory->destroy(split);
+  memory->destroy(end_velocity);
 }
 
 int FixETDImplicit::setmask()
 {
-  return INITIAL_INTEGRATE | POST_INTEGRATE | POST_NEIGHBOR | POST_RUN;
+  return INITIAL_INTEGRATE | POST_INTEGRATE | FINAL_INTEGRATE | POST_NEIGHBOR | POST_RUN;
 }
 
 void FixETDImplicit::init()
@@ -165,6 +174,19 @@ void FixETDImplicit::init()
                "diagonal, whose pair forces stay complete",
                other->id, other->style);
   }
+  // Under a steady force the friction step's output, which v holds, lags the streaming
+  // velocity by h/2 <F>/m (doc/fix_etd.rst): say where mean velocities should be read.
+  if (!overdamped && comm->me == 0 && !warned_force_fixes)
+    for (int f = 0; f < modify->nfix; f++)
+      if (modify->fix[f] != this && (modify->fmask[f] & POST_FORCE)) {
+        warned_force_fixes = true;
+        error->warning(FLERR,
+                       "Fix etd scheme implicit: fix {} ({}) adds forces; under a steady force "
+                       "the velocities in v lag the streaming velocity by dt/2 <F>/m: read mean "
+                       "velocities (flow profiles, drift) from the fix's per-atom output "
+                       "f_{}[1], f_{}[2], f_{}[3]",
+                       modify->fix[f]->id, modify->fix[f]->style, id, id, id);
+      }
   // fix wall/reflect/stochastic moves an atom that crossed its wall back along the atom's
   // velocity at post_integrate (it assumes the atom travelled with it). Here the atom travelled
   // with the mean of the velocities before and after the friction step, so an atom whose normal
@@ -262,6 +284,7 @@ void FixETDImplicit::setup(int)
   for (int k = 0; k < 6; k++) virial[k] = 0.0;
   for (int i = 0; i < atom->nlocal; i++)
     for (int k = 0; k < 6; k++) vatom[i][k] = 0.0;
+  record_end_velocity();
 }
 void FixETDImplicit::setup_post_neighbor()
 {
@@ -359,6 +382,29 @@ void FixETDImplicit::initial_integrate(int)
 // drift; the last force evaluation stands in for the coming one), or overdamped near x + h/2 v;
 // LAMMPS's check after this looks only at x. Where two atoms could be within the cutoff
 // unlisted there, the list is rebuilt now.
+// The per-atom output: BAOAB's end-of-step velocity v + h/2 F/m of the group's atoms (their
+// own velocity for the others, and when overdamped, where v is the velocity the atoms moved
+// with). F is the force of the step's end: LAMMPS has just computed it.
+void FixETDImplicit::final_integrate()
+{
+  record_end_velocity();
+}
+
+void FixETDImplicit::record_end_velocity()
+{
+  double **v = atom->v;
+  double **f = atom->f;
+  const int *mask = atom->mask;
+  const int *type = atom->type;
+  const double *rmass = atom->rmass;
+  const double *mass = atom->mass;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const bool kicked = !overdamped && (mask[i] & groupbit);
+    const double scale = kicked ? 0.5 * dt / (rmass ? rmass[i] : mass[type[i]]) : 0.0;
+    for (int k = 0; k < 3; k++) end_velocity[i][k] = v[i][k] + scale * f[i][k];
+  }
+}
+
 void FixETDImplicit::post_integrate()
 {
   const int nlocal = atom->nlocal;
@@ -1108,10 +1154,14 @@ void FixETDImplicit::grow_arrays(int nmax)
 {
   memory->grow(split, nmax, 6, "etd:split");
   memory->grow(vatom, nmax, 6, "etd:vatom");
-  for (int i = split_rows; i < nmax; i++)
+  memory->grow(end_velocity, nmax, 3, "etd:end_velocity");
+  for (int i = split_rows; i < nmax; i++) {
     for (int k = 0; k < 6; k++) split[i][k] = vatom[i][k] = 0.0;
+    for (int k = 0; k < 3; k++) end_velocity[i][k] = 0.0;
+  }
   split_rows = std::max(split_rows, nmax);
   maxvatom = split_rows;
+  array_atom = end_velocity;
 }
 
 void FixETDImplicit::copy_arrays(int i, int j, int)
@@ -1120,6 +1170,7 @@ void FixETDImplicit::copy_arrays(int i, int j, int)
     split[j][k] = split[i][k];
     vatom[j][k] = vatom[i][k];
   }
+  for (int k = 0; k < 3; k++) end_velocity[j][k] = end_velocity[i][k];
 }
 
 int FixETDImplicit::pack_exchange(int i, double *buf)
@@ -1128,7 +1179,8 @@ int FixETDImplicit::pack_exchange(int i, double *buf)
     buf[k] = split[i][k];
     buf[6 + k] = vatom[i][k];
   }
-  return 12;
+  for (int k = 0; k < 3; k++) buf[12 + k] = end_velocity[i][k];
+  return 15;
 }
 
 int FixETDImplicit::unpack_exchange(int nlocal, double *buf)
@@ -1137,12 +1189,13 @@ int FixETDImplicit::unpack_exchange(int nlocal, double *buf)
     split[nlocal][k] = buf[k];
     vatom[nlocal][k] = buf[6 + k];
   }
-  return 12;
+  for (int k = 0; k < 3; k++) end_velocity[nlocal][k] = buf[12 + k];
+  return 15;
 }
 
 double FixETDImplicit::memory_usage()
 {
-  return sizeof(double) * 12 * split_rows + sizeof(etd::FrictionPair) * pairs.capacity() +
+  return sizeof(double) * 15 * split_rows + sizeof(etd::FrictionPair) * pairs.capacity() +
       sizeof(double) * pair_noise.capacity() + sizeof(etd::FpmFrictionPair) * fpm_pairs.capacity() +
       sizeof(double) * fpm_noise.capacity() +
       sizeof(double) * (operand.capacity() + diagonal.capacity()) +

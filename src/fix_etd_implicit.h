@@ -32,6 +32,7 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
   void post_integrate() override;
   void post_run() override;
   void initial_integrate(int) override;
+  void final_integrate() override;
   void reset_dt() override;
   double compute_vector(int) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
@@ -146,6 +147,12 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
   double friction_step_temperature = 0.0;    // kinetic temperature right after the friction step
   long solves;
   long predictor_steps;    // overdamped steps that kept the predictor (singular midpoint)
+
+  // per-atom output (array_atom): v + h/2 F/m at the end of each step, whose mean is the
+  // streaming velocity (v, the friction step's output, lags it by h/2 <F>/m)
+  double **end_velocity;
+  bool warned_force_fixes = false;    // the lag under a steady force is said once per fix
+  void record_end_velocity();
 
   void kick(double fraction);
   void drift(double fraction);

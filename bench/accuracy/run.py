@@ -26,7 +26,7 @@ Sub-commands (each appends one JSON line per LAMMPS run to bench/accuracy/result
 Integrators (I): stock = stock pair style (dpd for GW, dpd/ext for P and HS) + fix nve;
 diag = dpd/gen + fix etd; imp = dpd/gen + fix etd scheme implicit; impv = dpd/gen + fix etd
 scheme implicit tol 1e-4 start velocity; shardlow = LAMMPS's fix shardlow + fix nve with pair_style
-dpd/fdt (DPD-REACT; s = 2 only: GW and HG).  LAMMPS runs with nice -n 5 on one rank; the plugin is
+dpd/fdt (DPD-REACT; s = 2 only: GW, HG and S2).  LAMMPS runs with nice -n 5 on one rank; the plugin is
 the copy /tmp/accuracy/etddpdplugin.so (copy it there first; the build folder's is rebuilt).
 """
 import argparse
@@ -258,7 +258,7 @@ def cmd_time(args):
                   f"steps = {record['s_per_tu']:.2f} s per time unit (load {load:.2f})", flush=True)
 
 
-VISCOSITY_FORCE = {"GW": 0.02, "HG": 0.3, "P": 0.3, "HS": 3.0}
+VISCOSITY_FORCE = {"GW": 0.02, "HG": 0.3, "S2": 3.0, "P": 0.3, "HS": 3.0}
 
 
 def cmd_time_matrix(args):
@@ -350,10 +350,10 @@ def parse_args(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("equilibrate")
-    p.add_argument("--fluid", required=True, choices=["GW", "HG", "P", "HS"])
+    p.add_argument("--fluid", required=True, choices=["GW", "HG", "S2", "P", "HS"])
     p.add_argument("--time", type=float, default=5.0)
     p = sub.add_parser("scan")
-    p.add_argument("--fluid", required=True, choices=["GW", "HG", "P", "HS"])
+    p.add_argument("--fluid", required=True, choices=["GW", "HG", "S2", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
     p.add_argument("--integrator", required=True, choices=sorted(INTEGRATORS))
     p.add_argument("--dt", type=float, nargs="+", required=True)
@@ -366,7 +366,7 @@ def parse_args(argv=None):
     p.add_argument("--pair", choices=["gen", "stock"], default=None,
                    help="velocity-Verlet only: gen runs dpd/gen in place of the stock pair style")
     p = sub.add_parser("confirm")
-    p.add_argument("--fluid", required=True, choices=["GW", "HG", "P", "HS"])
+    p.add_argument("--fluid", required=True, choices=["GW", "HG", "S2", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
     p.add_argument("--ref-dt", type=float, default=None, help="the reference's step (stock)")
     p.add_argument("--no-ref", action="store_true",
@@ -377,7 +377,7 @@ def parse_args(argv=None):
     p.add_argument("--seeds", type=int, nargs="+", default=[11, 12, 13, 14])
     p.add_argument("--windows", type=int, default=16)
     p = sub.add_parser("time")
-    p.add_argument("--fluid", required=True, choices=["GW", "HG", "P", "HS"])
+    p.add_argument("--fluid", required=True, choices=["GW", "HG", "S2", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
     p.add_argument("--cell", nargs="+", required=True, help="INTEGRATOR:DT")
     p.add_argument("--repeats", type=int, default=3)
@@ -389,7 +389,7 @@ def parse_args(argv=None):
                    help="off: one newton-off neighbor list for pair style and fix (tables use on)")
     p.add_argument("--sitting", default=clock.strftime("%H%M"))
     p = sub.add_parser("time-matrix")
-    p.add_argument("--fluid", nargs="*", choices=["GW", "HG", "P", "HS"])
+    p.add_argument("--fluid", nargs="*", choices=["GW", "HG", "S2", "P", "HS"])
     p.add_argument("--mass", type=float, nargs="*")
     p.add_argument("--repeats", type=int, default=3)
     p.add_argument("--steps", type=int, default=400)
@@ -397,7 +397,7 @@ def parse_args(argv=None):
     p.add_argument("--ranks", type=int, default=1)
     p.add_argument("--sitting", default=clock.strftime("%H%M"))
     p = sub.add_parser("derive-ref")
-    p.add_argument("--fluid", required=True, choices=["GW", "HG", "P", "HS"])
+    p.add_argument("--fluid", required=True, choices=["GW", "HG", "S2", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
     p.add_argument("--static-from", type=float, required=True,
                    help="the mass whose reference gives kBT, P and g(r)")
@@ -408,7 +408,7 @@ def parse_args(argv=None):
     p.add_argument("--seeds-only", action="store_true",
                    help="write the seed check's references only, not the scan's")
     p = sub.add_parser("viscosity")
-    p.add_argument("--fluid", required=True, choices=["GW", "HG", "P", "HS"])
+    p.add_argument("--fluid", required=True, choices=["GW", "HG", "S2", "P", "HS"])
     p.add_argument("--mass", type=float, required=True)
     p.add_argument("--integrator", required=True, choices=sorted(INTEGRATORS))
     p.add_argument("--dt", type=float, required=True)

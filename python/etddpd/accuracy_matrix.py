@@ -294,6 +294,7 @@ def group(cell_list):
 FLUIDS = {
     "GW": {"n": 3.0, "gamma": 4.5, "s": 2.0, "rc": 1.0},
     "HG": {"n": 3.0, "gamma": 45.0, "s": 2.0, "rc": 1.0},
+    "S2": {"n": 5.292, "gamma": 35.368, "s": 2.0, "rc": 1.5},
     "P": {"n": 4.0, "gamma": 4.5, "s": 0.5, "rc": 1.0},
     "HS": {"n": 4.0, "gamma": 6.97099466424446, "s": 0.424428900898052, "rc": 1.5},
 }
@@ -320,7 +321,8 @@ INTEGRATOR_NAMES = {
     "impv": "etd implicit tol 1e-4 start velocity",
     "shardlow": "shardlow + nve (dpd/fdt)",
 }
-FLUID_NAMES = {"GW": "Groot-Warren, s = 2", "HG": "Groot-Warren with gamma = 45", "P": "papers', s = 1/2", "HS": "high Sc (dpd/design)"}
+FLUID_NAMES = {"GW": "Groot-Warren, s = 2", "HG": "Groot-Warren with gamma = 45",
+               "S2": "eta = 30, Sc = 500 with s = 2", "P": "papers', s = 1/2", "HS": "high Sc (dpd/design)"}
 
 
 def _format_dt(dt):
@@ -470,7 +472,7 @@ def plot_map(cell_list, path, temperature="kBT"):
     observables = [temperature, "P", "g(r)", "D"]
     names = [n for n in INTEGRATOR_NAMES if any(c.integrator == n for c in cell_list)]
     fig, axes = plt.subplots(1, len(names), figsize=(4.2 * len(names), 3.8), sharex=True, sharey=True)
-    markers = {"GW": "o", "HG": "D", "P": "s", "HS": "^"}
+    markers = {"GW": "o", "HG": "D", "S2": "v", "P": "s", "HS": "^"}
     colours = {1.0: "C0", 0.1: "C1", 0.01: "C2", 0.001: "C3"}
     for ax, name in zip(np.atleast_1d(axes), names):
         for c in cell_list:

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# The comparison with LAMMPS's fix shardlow (README.md): the runs behind the breakdown map and
+# its table. Records go to bench/accuracy/results/ (the accuracy matrix's, through its run.py);
+# map.md and map.png are regenerated from them. Usage:
+#   bash bench/shardlow/run.sh [scan|viscosity|refusals|map ...]   (default: all four, about 75
+#   CPU-minutes; the GW fluid's own shardlow cells are in bench/accuracy/campaign.sh GW)
+set -u
+cd "$(dirname "$0")"
+PLUGIN=${PLUGIN:-/tmp/accuracy/etddpdplugin.so}
+. ../../tools/lammps_env.sh
+export LMP PLUGIN
+steps=${*:-scan viscosity refusals map}
+run=(/usr/bin/python3 ../accuracy/run.py)
+for step in $steps; do
+  case "$step" in
+    scan|viscosity|refusals|map) ;;
+    *) echo "run.sh: unknown step '$step' (scan, viscosity, refusals or map)" >&2; exit 2 ;;
+  esac
+done
+for step in $steps; do
+  case "$step" in
+  scan)
+    # the gamma = 45 fluid at m = 0.01: per-pair friction stiffness gamma dt / m = 4500 dt;
+    # the reference at 0.09, the stock cells up to 0.9
+    [ -f /tmp/accuracy/HG.data ] || "${run[@]}" equilibrate --fluid HG
+    S="${run[@]} scan --fluid HG --mass 0.01"
+    $S --integrator stock --dt 0.00002 --role ref --windows 16
+    $S --integrator shardlow --dt 0.0002 0.0005 0.001 0.002 0.005
+    $S --integrator imp --dt 0.0005 0.001 0.002 0.003 0.005
+    $S --integrator stock --dt 0.00005 0.0001 0.0002 ;;
+  viscosity)
+    # reverse Poiseuille flow, 10 time units after 1, seeds 10-15 (GW m = 0.01 at force 0.1:
+    # each integrator at its largest step of the seed check) and 10-11 (HG)
+    V="${run[@]} viscosity --time 10"
+    for seed in 10 11 12 13 14 15; do
+      for cell in shardlow:0.004 imp:0.005 stock:0.0007 shardlow:0.005 stock:0.0001; do
+        $V --fluid GW --mass 0.01 --force 0.1 --integrator "${cell%%:*}" --dt "${cell##*:}" --seed "$seed"
+      done
+    done
+    for seed in 10 11; do
+      for cell in stock:0.00005 shardlow:0.0005 shardlow:0.002 shardlow:0.005 imp:0.0005 imp:0.002 imp:0.005; do
+        $V --fluid HG --mass 0.01 --force 0.3 --integrator "${cell%%:*}" --dt "${cell##*:}" --seed "$seed"
+      done
+    done ;;
+  refusals) bash refusals.sh ;;
+  map) /usr/bin/python3 map.py --figure map.png >map.md ;;
+  esac
+done
