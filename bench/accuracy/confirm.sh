@@ -38,14 +38,17 @@ scan() {    # mass integrator dt: one cell once per seed, no reference
 }
 for m in $masses; do
   case "$fluid:$m" in
-  GW:1)     $C --mass 1 --ref-dt 0.001 --cell stock:0.005 diag:0.005 imp:0.06 ;;
+  GW:1)     $C --mass 1 --ref-dt 0.001 --cell stock:0.005 diag:0.005 imp:0.03 imp:0.04 imp:0.06 \
+              shardlow:0.01 shardlow:0.02 ;;
   GW:0.1)
-    $C --mass 0.1 --ref-dt 0.0003 --cell stock:0.007 diag:0.003 imp:0.02
+    $C --mass 0.1 --ref-dt 0.0003 --cell stock:0.007 diag:0.003 imp:0.015 imp:0.02 shardlow:0.01
     scan 0.1 stock 0.005 ;;
   GW:0.01)
-    $C --mass 0.01 --ref-dt 0.0001 --cell stock:0.0007 imp:0.005 imp:0.007 impv:0.005 ;;
+    $C --mass 0.01 --ref-dt 0.0001 --cell stock:0.0007 imp:0.005 imp:0.007 impv:0.005 \
+      shardlow:0.004 shardlow:0.005 ;;
   GW:0.001)
-    $C --mass 0.001 --ref-dt 0.00003 --cell imp:0.001 impv:0.0015 stock:0.0001
+    $C --mass 0.001 --ref-dt 0.00003 --cell imp:0.001 imp:0.0015 impv:0.0015 stock:0.0001 \
+      shardlow:0.0007 shardlow:0.001
     scan 0.001 impv 0.001 ;;
   GW:diag)  scan 0.01 diag 0.0005; scan 0.001 diag 0.0001 ;;    # against the references above
   P:1)      $C --mass 1 --ref-dt 0.001 --cell stock:0.003 imp:0.08 ;;

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Where LAMMPS's Shardlow splitting breaks down, and where the implicit scheme holds
 (bench/shardlow/README.md): every s = 2 cell of the accuracy matrix's records (the Groot-Warren
-fluid GW and its gamma = 45 variant HG) against the per-pair friction stiffness gamma dt / m (the
+fluid GW, its gamma = 45 variant HG and the eta = 30, Sc = 500 fluid S2) against the per-pair friction stiffness gamma dt / m (the
 stiffness of a pair at r -> 0, where w_D = 1), with each observable's deviation from stock
 velocity-Verlet at a small step, and the viscosity from reverse-Poiseuille flow where it was run.
 
@@ -17,7 +17,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "python"))
 from etddpd import accuracy_matrix as am  # noqa: E402
 
-FLUIDS = ("GW", "HG")
+FLUIDS = ("GW", "HG", "S2")
 INTEGRATORS = ("shardlow", "imp", "stock")
 
 
@@ -92,7 +92,8 @@ def plot(map_rows, path):
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, 2, figsize=(9, 3.6))
     styles = {"shardlow": ("C3", "shardlow + nve"), "imp": ("C0", "etd implicit"), "stock": ("0.5", "stock + nve")}
-    markers = {("GW", 0.01): "o", ("GW", 0.001): "s", ("HG", 0.01): "D", ("GW", 0.1): "^", ("GW", 1.0): "v"}
+    markers = {("GW", 0.01): "o", ("GW", 0.001): "s", ("HG", 0.01): "D", ("GW", 0.1): "^", ("GW", 1.0): "v",
+               ("S2", 1.0): "P"}
     for ax, (name, label) in zip(axes, (("D", "self-diffusion D (%)"), ("eta", "viscosity, from v (%)"))):
         for integrator, (colour, text) in styles.items():
             for (fluid, mass), marker in markers.items():

@@ -2,8 +2,9 @@
 # The comparison with LAMMPS's fix shardlow (README.md): the runs behind the breakdown map and
 # its table. Records go to bench/accuracy/results/ (the accuracy matrix's, through its run.py);
 # map.md and map.png are regenerated from them. Usage:
-#   bash bench/shardlow/run.sh [scan|viscosity|refusals|map ...]   (default: all four, about 75
-#   CPU-minutes; the GW fluid's own shardlow cells are in bench/accuracy/campaign.sh GW)
+#   bash bench/shardlow/run.sh [scan|viscosity|refusals|map ...]   (default: all four, about 90
+#   CPU-minutes; the GW fluid's own shardlow cells are in bench/accuracy/campaign.sh GW and
+#   confirm.sh GW)
 set -u
 cd "$(dirname "$0")"
 PLUGIN=${PLUGIN:-/tmp/accuracy/etddpdplugin.so}
@@ -27,7 +28,18 @@ for step in $steps; do
     $S --integrator stock --dt 0.00002 --role ref --windows 16
     $S --integrator shardlow --dt 0.0002 0.0005 0.001 0.002 0.005
     $S --integrator imp --dt 0.0005 0.001 0.002 0.003 0.005
-    $S --integrator stock --dt 0.00005 0.0001 0.0002 ;;
+    $S --integrator stock --dt 0.00005 0.0001 0.0002
+    # the high-Sc target with s = 2 (S2: eta = 30, Sc = 500 at m = 1, gamma = 35.4, n = 5.29,
+    # rc = 1.5): fix shardlow's best chance at that fluid, against the package's s < 2 design
+    # (HS, the accuracy matrix) and stock; reference at Gamma dt / m = 0.026, then four seeds
+    [ -f /tmp/accuracy/S2.data ] || "${run[@]}" equilibrate --fluid S2
+    S="${run[@]} scan --fluid S2 --mass 1"
+    $S --integrator stock --dt 0.0003 --role ref --windows 16
+    $S --integrator shardlow --dt 0.005 0.01 0.02 0.03 0.04 0.06
+    $S --integrator imp --dt 0.01 0.02 0.03 0.04 0.06 0.08 0.1 0.15
+    $S --integrator stock --dt 0.0005 0.001 0.002 0.003
+    "${run[@]}" confirm --fluid S2 --mass 1 --ref-dt 0.0003 --cell stock:0.002 stock:0.003 \
+      shardlow:0.005 shardlow:0.01 imp:0.06 imp:0.1 ;;
   viscosity)
     # reverse Poiseuille flow, 10 time units after 1, seeds 10-15 (GW m = 0.01 at force 0.1:
     # each integrator at its largest step of the seed check) and 10-11 (HG)
