@@ -51,7 +51,7 @@ def viscosity_deviations(records):
 def rows(cell_list, viscosity):
     out = []
     for c in cell_list:
-        if c.fluid not in FLUIDS or c.integrator not in INTEGRATORS:
+        if c.fluid not in FLUIDS or c.integrator not in INTEGRATORS or c.stopped:
             continue
         gamma = am.FLUIDS[c.fluid]["gamma"]
         out.append({"fluid": c.fluid, "mass": c.mass, "integrator": c.integrator, "dt": c.dt,

@@ -47,14 +47,15 @@ class Cell:
     dt: float
     deviations: dict = field(default_factory=dict)
     cg_iterations: float = None
+    stopped: bool = False    # the run stopped with a LAMMPS ERROR (a step too large for the skin)
 
     def passes(self, observables):
-        return all(self.deviations[name].within(TOLERANCE[name])
-                   for name in observables if name in self.deviations)
+        return not self.stopped and all(self.deviations[name].within(TOLERANCE[name])
+                                        for name in observables if name in self.deviations)
 
     def clearly_fails(self, observables):
-        return any(self.deviations[name].beyond(TOLERANCE[name])
-                   for name in observables if name in self.deviations)
+        return self.stopped or any(self.deviations[name].beyond(TOLERANCE[name])
+                                   for name in observables if name in self.deviations)
 
 
 def mean_and_error(samples):
@@ -180,6 +181,10 @@ def cells(records):
     refs = references(records)
     latest = {}
     for record in records:
+        if record.get("exit") != 0 and record.get("role") == "cell":
+            # a run that LAMMPS stopped fails its step (and ends the scan there)
+            latest[(record["fluid"], record["mass"], record["integrator"], record["dt"])] = record
+            continue
         if record.get("exit") != 0 or "error" in record:
             continue
         if record.get("role") != "cell" and (record.get("role") != "ref"
@@ -190,7 +195,11 @@ def cells(records):
     out = []
     for key, record in sorted(latest.items()):
         ref = refs.get(key[:2])
-        if ref is not None:
+        if ref is None:
+            continue
+        if record.get("exit") != 0:
+            out.append(Cell(*key, stopped=True))
+        else:
             out.append(compare(record, ref))
     return out
 
@@ -215,6 +224,8 @@ def limiting(scan, observables, dt):
     if not beyond:
         return []
     cell = beyond[0]
+    if cell.stopped:
+        return ["stopped (ERROR)"]
     return [name for name in observables
             if name in cell.deviations and not cell.deviations[name].within(TOLERANCE[name])]
 
@@ -414,6 +425,10 @@ def cell_table(cell_list):
     lines = ["| fluid | m | integrator | dt | kBT % | kBT friction step % | P % | max dg(r) | D % | CG it. |",
              "|---|---|---|---|---|---|---|---|---|---|"]
     for c in sorted(cell_list, key=lambda c: (c.fluid, -c.mass, list(INTEGRATOR_NAMES).index(c.integrator), c.dt)):
+        if c.stopped:
+            lines.append(f"| {c.fluid} | {c.mass:g} | {c.integrator} | {c.dt:g} | stopped: LAMMPS ERROR (the step "
+                         "outruns the skin) | | | | | |")
+            continue
         d = c.deviations
 
         def pct(name):
@@ -443,7 +458,7 @@ def plot(cell_list, directory):
             for integrator, scan in sorted(scans.items()):
                 if name == "kBT_friction" and integrator not in ("imp", "impv"):
                     continue
-                scan = sorted(scan, key=lambda c: c.dt)
+                scan = sorted((c for c in scan if not c.stopped), key=lambda c: c.dt)
                 ax.errorbar([c.dt for c in scan], [scale * c.deviations[name].value for c in scan],
                             yerr=[scale * c.deviations[name].error for c in scan], marker="o", ms=3,
                             capsize=2, label=INTEGRATOR_NAMES[integrator])

@@ -119,6 +119,20 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertIsNone(rows["imp"]["speedup_shardlow"])    # no peer timed
         self.assertIn("| 2.50 | - |", am.summary_table(list(rows.values())))
 
+    def test_a_run_lammps_stopped_ends_the_scan(self):
+        # the implicit scheme passes at 0.002 and 0.004 by its observables, but its run at 0.003
+        # stopped with an ERROR (a step the skin does not cover): 0.002 is its largest step
+        records = scan_records()[:5] + [dict(record("imp", 0.003, 1.0, 20.0, 1.0), exit=1),
+                                        record("imp", 0.004, 1.0, 20.0, 1.0)]
+        cells = am.cells(records)
+        stopped = next(c for c in cells if c.integrator == "imp" and c.dt == 0.003)
+        self.assertTrue(stopped.stopped)
+        self.assertFalse(stopped.passes(["kBT", "P", "g(r)", "D"]))
+        rows = {r["integrator"]: r for r in am.summary_rows(cells)}
+        self.assertEqual(rows["imp"]["dt"], 0.002)
+        self.assertEqual(rows["imp"]["limited_by"], ["stopped (ERROR)"])
+        self.assertIn("stopped: LAMMPS ERROR", am.cell_table(cells))
+
     def test_speedup_over_shardlow_at_its_own_largest_step(self):
         records = scan_records() + [record("shardlow", 0.001, 1.002, 20.0, 1.01),
                                     record("shardlow", 0.0015, 1.004, 20.0, 1.03)]    # D +3 %
