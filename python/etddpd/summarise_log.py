@@ -18,22 +18,15 @@ def parse_args(argv=None):
     return parser.parse_args(argv)
 
 
-# fix etd scheme implicit's fifth output: the kinetic temperature right after the friction step
-FRICTION_STEP_COLUMN = "f_integrate[5]"
-
-
 def production_temperatures(text, log):
-    """Temp of the last thermo table of the log, its first row (the start) left out, and the
-    friction-step temperature of the same rows where the table has it (else None)."""
+    """Temp of the last thermo table of the log, its first row (the start) left out."""
     tables = thermo_tables(text, log)
     if not tables:
         sys.exit("no thermo output in " + log)
     last = tables[-1]
     if "Temp" not in last.names:
         sys.exit(f"no Temp column in the last thermo table of {log} (columns: {' '.join(last.names)})")
-    friction = last.get(FRICTION_STEP_COLUMN)
-    friction = None if friction is None else friction[1:]
-    return last.column("Temp")[1:], friction
+    return last.column("Temp")[1:]
 
 
 def temperature_line(label, temps, target):
@@ -45,16 +38,10 @@ def temperature_line(label, temps, target):
     return line
 
 
-def print_summary(temps, loop, args, friction_temps=None):
+def print_summary(temps, loop, args):
     print("ETD-DPD run summary")
     print(f"  atoms {loop.atoms}, MPI ranks {loop.procs}, steps {loop.steps}, loop time {loop.seconds:.2f} s")
-    if friction_temps is None:
-        print(temperature_line("temperature (kBT) over the production run", temps, args.target_temperature))
-    else:
-        print(temperature_line("kBT over the production run, end-of-step velocities (thermo temp)", temps,
-                               args.target_temperature))
-        print(temperature_line("kBT over the production run, friction-step velocities (f_integrate[5])",
-                               friction_temps, args.target_temperature))
+    print(temperature_line("temperature (kBT) over the production run", temps, args.target_temperature))
     print(f"  throughput: {loop.steps * loop.atoms / loop.seconds:.3e} atom-steps/s")
     if args.wall is not None:
         print(f"  wall-clock of the whole job: {args.wall:.1f} s")
@@ -71,8 +58,8 @@ def main(argv=None):
     if "ERROR" in text:
         print("\n".join(l for l in text.splitlines() if "ERROR" in l))
         sys.exit(1)
-    temps, friction_temps = production_temperatures(text, args.log)
-    print_summary(temps, loop_times(text)[-1], args, friction_temps)
+    temps = production_temperatures(text, args.log)
+    print_summary(temps, loop_times(text)[-1], args)
 
 
 if __name__ == "__main__":

@@ -5,6 +5,7 @@ temperatures, each against the target."""
 import contextlib
 import io
 import os
+import re
 import sys
 import tempfile
 import unittest
@@ -38,20 +39,14 @@ class SummariseLog(unittest.TestCase):
         self.assertNotIn("friction-step", text)
         self.assertIn("throughput: 1.600e+05 atom-steps/s", text)
 
-    def test_friction_step_temperature_beside_the_end_of_step_one(self):
-        text = summary(log_text(["Temp", "f_integrate[5]", "Press"],
-                                [(50, 0.99, 1.002, 20.0), (100, 0.992, 1.000, 20.0)]))
-        self.assertIn("end-of-step velocities (thermo temp): 0.9910", text)
-        self.assertIn("friction-step velocities (f_integrate[5]): 1.0010", text)
-        self.assertIn("deviation +0.10 %", text)
-
     def test_the_main_jobs_committed_log(self):
         log = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples",
                            "quickstart", "log.quickstart.g++.1")
         with open(log) as f:
             text = summary(f.read())
-        self.assertIn("end-of-step velocities (thermo temp): 0.99", text)
-        self.assertIn("friction-step velocities (f_integrate[5]): 1.00", text)
+        # LAMMPS's temp of the implicit scheme at m = 0.01, dt = 0.003 within 1 % of kBT
+        mean = float(re.search(r"production run: ([0-9.]+)", text).group(1))
+        self.assertAlmostEqual(mean, 1.0, delta=0.01)
         self.assertIn("steps 1000", text)
 
 
