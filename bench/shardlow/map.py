@@ -2,7 +2,8 @@
 """Where LAMMPS's Shardlow splitting breaks down, and where the implicit scheme holds
 (bench/shardlow/README.md): every s = 2 cell of the accuracy matrix's records (the Groot-Warren
 fluid GW, its gamma = 45 variant HG and the eta = 30, Sc = 500 fluid S2) against the per-pair friction stiffness gamma dt / m (the
-stiffness of a pair at r -> 0, where w_D = 1), with each observable's deviation from stock
+stiffness of a pair at r -> 0, where w_D = 1) and an atom's, Gamma dt / m (Gamma = gamma n [w_D] / 3,
+its partners' friction summed), with each observable's deviation from stock
 velocity-Verlet at a small step, and the viscosity from reverse-Poiseuille flow where it was run.
 
 Usage: map.py [--results DIR] [--figure PATH]   (markdown on standard output)
@@ -64,8 +65,9 @@ def rows(cell_list, viscosity):
 
 
 def table(map_rows):
-    lines = ["| fluid | m | integrator | dt | gamma dt / m | kBT % | P % | max dg(r) | D % | eta (v) % | eta (displacements) % |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines = ["| fluid | m | integrator | dt | gamma dt / m | Gamma dt / m | kBT % | P % | max dg(r) | D % "
+             "| eta (v) % | eta (displacements) % |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
 
     def pct(d, name):
         mark = "" if d.within(am.TOLERANCE[name]) else " **x**"
@@ -81,7 +83,7 @@ def table(map_rows):
         g = d["g(r)"]
         gmark = "" if g.within(am.TOLERANCE["g(r)"]) else " **x**"
         lines.append(f"| {r['fluid']} | {r['mass']:g} | {am.INTEGRATOR_NAMES[r['integrator']]} | {r['dt']:g} | "
-                     f"{r['pair_stiffness']:.3g} | {pct(d['kBT'], 'kBT')} | {pct(d['P'], 'P')} | "
+                     f"{r['pair_stiffness']:.3g} | {r['atom_stiffness']:.3g} | {pct(d['kBT'], 'kBT')} | {pct(d['P'], 'P')} | "
                      f"{g.value:.3f}{gmark} | {pct(d['D'], 'D')} | {eta(r['eta'])} | {eta(r['eta_disp'])} |")
     return "\n".join(lines)
 
@@ -106,11 +108,11 @@ def plot(map_rows, path):
                     y = [100 * r["deviations"]["D"].value for r in pts]
                     e = [100 * r["deviations"]["D"].error for r in pts]
                 if pts:
-                    ax.errorbar([r["pair_stiffness"] for r in pts], y, yerr=e, color=colour, marker=marker,
+                    ax.errorbar([r["atom_stiffness"] for r in pts], y, yerr=e, color=colour, marker=marker,
                                 ms=4, capsize=2, ls="-", label=f"{text}, {fluid} m = {mass:g}")
         ax.axhspan(-2, 2, color="0.9", zorder=0)
         ax.set_xscale("log")
-        ax.set_xlabel("per-pair friction stiffness gamma dt / m")
+        ax.set_xlabel("friction stiffness of an atom, Gamma dt / m")
         ax.set_ylabel(label)
     axes[0].legend(fontsize=6)
     fig.suptitle("s = 2 fluids: deviation from velocity-Verlet at a small step (band: 2 %)", fontsize=9)
