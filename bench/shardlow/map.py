@@ -88,6 +88,41 @@ def table(map_rows):
     return "\n".join(lines)
 
 
+def tuned_costs(timings):
+    """Markdown: the cells timed at more than one neighbor skin in a fluid and mass's latest
+    sitting (each integrator's own best tuning), fastest round per (cell, ranks, skin), and the
+    implicit scheme's speed-up over fix shardlow with each at its fastest skin."""
+    usable = [r for r in timings if r.get("exit") == 0 and r.get("s_per_tu") and r.get("newton", "on") == "on"]
+    latest = {}
+    for r in usable:
+        key = (r["fluid"], r["mass"])
+        latest[key] = max(latest.get(key, ""), str(r.get("sitting", "")))
+    best = {}
+    for r in usable:
+        if str(r.get("sitting", "")) != latest[(r["fluid"], r["mass"])]:
+            continue
+        key = (r["fluid"], r["mass"], r["integrator"], r["dt"], r.get("ranks", 1), r.get("skin", 0.3))
+        best[key] = min(best.get(key, np.inf), r["s_per_tu"])
+    tuned = {k[:5] for k in best if k[5] != 0.3}
+    lines = ["| fluid | m | integrator | dt | ranks | s per time unit, skin 0.3 | skin 0.7 | fastest |",
+             "|---|---|---|---|---|---|---|---|"]
+    fastest = {}
+    for key in sorted(tuned):
+        by_skin = {k[5]: v for k, v in best.items() if k[:5] == key}
+        fastest[key] = min(by_skin.values())
+        cols = [f"{by_skin[sk]:.2f}" if sk in by_skin else "-" for sk in (0.3, 0.7)]
+        lines.append(f"| {key[0]} | {key[1]:g} | {key[2]} | {key[3]:g} | {key[4]} | {cols[0]} | {cols[1]} | "
+                     f"{fastest[key]:.2f} |")
+    for (fluid, mass, integrator, dt, ranks), cost in sorted(fastest.items()):
+        if integrator != "imp":
+            continue
+        peers = [v for k, v in fastest.items() if k[:2] == (fluid, mass) and k[2] == "shardlow" and k[4] == ranks]
+        if peers:
+            lines.append(f"\n{fluid} m = {mass:g}, {ranks} rank(s): the implicit scheme at its fastest skin "
+                         f"{min(peers) / cost:.2f} times fix shardlow at its fastest skin")
+    return "\n".join(lines)
+
+
 def plot(map_rows, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -132,6 +167,10 @@ def main(argv=None):
     viscosity = viscosity_deviations(am.read_jsonl(vpath)) if os.path.exists(vpath) else {}
     map_rows = rows(cell_list, viscosity)
     print(table(map_rows))
+    tpath = os.path.join(args.results, "timing.jsonl")
+    if os.path.exists(tpath):
+        print("\n## Each integrator at its own best neighbor skin (alternated rounds, fastest)\n")
+        print(tuned_costs(am.read_jsonl(tpath)))
     if args.figure:
         plot(map_rows, args.figure)
         print(f"\n![map]({os.path.basename(args.figure)})")

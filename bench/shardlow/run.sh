@@ -39,7 +39,7 @@ for step in $steps; do
     $S --integrator imp --dt 0.01 0.02 0.03 0.04 0.06 0.08 0.1 0.15
     $S --integrator stock --dt 0.0005 0.001 0.002 0.003
     "${run[@]}" confirm --fluid S2 --mass 1 --ref-dt 0.0003 --cell stock:0.002 stock:0.003 \
-      shardlow:0.005 shardlow:0.01 imp:0.06 imp:0.1 ;;
+      shardlow:0.005 shardlow:0.01 imp:0.06 imp:0.08 imp:0.1 stock:0.001 ;;
   viscosity)
     # reverse Poiseuille flow, 10 time units after 1, seeds 10-15 (GW m = 0.01 at force 0.1:
     # each integrator at its largest step of the seed check) and 10-11 (HG)
