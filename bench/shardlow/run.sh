@@ -49,6 +49,19 @@ for step in $steps; do
         $V --fluid GW --mass 0.01 --force 0.1 --integrator "${cell%%:*}" --dt "${cell##*:}" --seed "$seed"
       done
     done
+    # the other masses of GW, four seeds: the reference, stock, shardlow and the implicit scheme
+    # at their largest steps of the seed check
+    for seed in 10 11 12 13; do
+      for cells in "1 stock:0.001 stock:0.005 shardlow:0.02 imp:0.04" \
+                   "0.1 stock:0.0003 stock:0.005 shardlow:0.01 imp:0.02" \
+                   "0.001 stock:0.00003 stock:0.0001 shardlow:0.0007 imp:0.001"; do
+        set -- $cells
+        mass=$1; shift
+        for cell in "$@"; do
+          $V --fluid GW --mass "$mass" --force 0.1 --integrator "${cell%%:*}" --dt "${cell##*:}" --seed "$seed"
+        done
+      done
+    done
     for seed in 10 11; do
       for cell in stock:0.00005 shardlow:0.0005 shardlow:0.002 shardlow:0.005 imp:0.0005 imp:0.002 imp:0.005; do
         $V --fluid HG --mass 0.01 --force 0.3 --integrator "${cell%%:*}" --dt "${cell##*:}" --seed "$seed"
