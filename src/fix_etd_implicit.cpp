@@ -392,17 +392,16 @@ void FixETDImplicit::final_integrate()
 
 void FixETDImplicit::record_end_velocity()
 {
-  double **v = atom->v;
-  double **f = atom->f;
-  const int *mask = atom->mask;
-  const int *type = atom->type;
-  const double *rmass = atom->rmass;
-  const double *mass = atom->mass;
   for (int i = 0; i < atom->nlocal; i++) {
-    const bool kicked = !overdamped && (mask[i] & groupbit);
-    const double scale = kicked ? 0.5 * dt / (rmass ? rmass[i] : mass[type[i]]) : 0.0;
-    for (int k = 0; k < 3; k++) end_velocity[i][k] = v[i][k] + scale * f[i][k];
+    const bool kicked = !overdamped && (atom->mask[i] & groupbit);
+    const double scale = kicked ? 0.5 * dt / atom_mass(i) : 0.0;
+    for (int k = 0; k < 3; k++) end_velocity[i][k] = atom->v[i][k] + scale * atom->f[i][k];
   }
+}
+
+double FixETDImplicit::atom_mass(int i) const
+{
+  return atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
 }
 
 void FixETDImplicit::post_integrate()

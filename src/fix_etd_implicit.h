@@ -153,6 +153,7 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
   double **end_velocity;
   bool warned_force_fixes = false;    // the lag under a steady force is said once per fix
   void record_end_velocity();
+  double atom_mass(int i) const;    // per-atom or per-type mass
 
   void kick(double fraction);
   void drift(double fraction);
