@@ -378,10 +378,6 @@ void FixETDImplicit::initial_integrate(int)
   drift(0.5);
 }
 
-// The next friction step happens at x + h/2 (v + h F/m) (the next step's first kick and half
-// drift; the last force evaluation stands in for the coming one), or overdamped near x + h/2 v;
-// LAMMPS's check after this looks only at x. Where two atoms could be within the cutoff
-// unlisted there, the list is rebuilt now.
 // The per-atom output: BAOAB's end-of-step velocity v + h/2 F/m of the group's atoms (their
 // own velocity for the others, and when overdamped, where v is the velocity the atoms moved
 // with). F is the force of the step's end: LAMMPS has just computed it.
@@ -404,6 +400,10 @@ double FixETDImplicit::atom_mass(int i) const
   return atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
 }
 
+// The next friction step happens at x + h/2 (v + h F/m) (the next step's first kick and half
+// drift; the last force evaluation stands in for the coming one), or overdamped near x + h/2 v;
+// LAMMPS's check after this looks only at x. Where two atoms could be within the cutoff
+// unlisted there, the list is rebuilt now.
 void FixETDImplicit::post_integrate()
 {
   const int nlocal = atom->nlocal;
