@@ -311,12 +311,9 @@ void FixETDImplicit::kick(double fraction)
   double **v = atom->v;
   double **f = atom->f;
   const int *mask = atom->mask;
-  const int *type = atom->type;
-  const double *rmass = atom->rmass;
-  const double *mass = atom->mass;
   for (int i = 0; i < atom->nlocal; i++)
     if (mask[i] & groupbit) {
-      const double scale = fraction * dt / (rmass ? rmass[i] : mass[type[i]]);
+      const double scale = fraction * dt / atom_mass(i);
       for (int k = 0; k < 3; k++) v[i][k] += scale * f[i][k];
     }
   if (dofs == 6) {    // torques from anything but the DPD friction and noise (none from dpd/fpm)
@@ -325,7 +322,7 @@ void FixETDImplicit::kick(double fraction)
     const double *radius = atom->radius;
     for (int i = 0; i < atom->nlocal; i++)
       if (mask[i] & groupbit) {
-        const double scale = fraction * dt / (0.4 * rmass[i] * radius[i] * radius[i]);
+        const double scale = fraction * dt / (0.4 * atom->rmass[i] * radius[i] * radius[i]);
         for (int k = 0; k < 3; k++) omega[i][k] += scale * torque[i][k];
       }
   }
@@ -335,12 +332,9 @@ void FixETDImplicit::kick(double fraction)
 void FixETDImplicit::dof_inertia(std::vector<double> &inertia) const
 {
   const int nlocal = atom->nlocal;
-  const int *type = atom->type;
-  const double *rmass = atom->rmass;
-  const double *mass = atom->mass;
   inertia.resize(dofs * nlocal);
   for (int i = 0; i < nlocal; i++) {
-    const double m = rmass ? rmass[i] : mass[type[i]];
+    const double m = atom_mass(i);
     for (int k = 0; k < 3; k++) inertia[dofs * i + k] = m;
     if (dofs == 6)
       for (int k = 3; k < 6; k++)
@@ -409,13 +403,10 @@ void FixETDImplicit::post_integrate()
   const int nlocal = atom->nlocal;
   double **v = atom->v;
   double **f = atom->f;
-  const int *type = atom->type;
-  const double *rmass = atom->rmass;
-  const double *mass = atom->mass;
   std::vector<double> &lead = work.lead;
   lead.resize(3 * nlocal);
   for (int i = 0; i < nlocal; i++) {
-    const double kick = overdamped ? 0.0 : dt / (rmass ? rmass[i] : mass[type[i]]);
+    const double kick = overdamped ? 0.0 : dt / atom_mass(i);
     for (int k = 0; k < 3; k++) lead[3 * i + k] = 0.5 * dt * (v[i][k] + kick * f[i][k]);
   }
   if (neighbor_safety.could_outrun(lmp, groupbit, lead)) next_reneighbor = update->ntimestep;
