@@ -2,8 +2,9 @@
 # Set up everything ETD-DPD needs on a Debian 12 machine, idempotently:
 #   1. Debian packages (compiler, CMake, Open MPI, GoogleTest, Random123, numpy/scipy/matplotlib)
 #   2. LAMMPS 29Sep2021 update 2 from Debian's source package, built as a shared library with
-#      MPI, PLUGIN, DPD-BASIC, DPD-REACT (fix shardlow, the peer), MOLECULE, EXTRA-FIX and RIGID, installed into a cache prefix
-#      keyed by version and configuration (reused on the next call)
+#      MPI, PLUGIN, DPD-BASIC, DPD-REACT (fix shardlow, the peer), MOLECULE, EXTRA-FIX and
+#      RIGID, installed into a cache prefix keyed by version and configuration (reused on the
+#      next call)
 #   3. the ETD-DPD plugin and its tests, built incrementally in ./build
 # Environment:
 #   ETD_DPD_LAMMPS  which Debian suite's LAMMPS source: bookworm (default; LAMMPS 29Sep2021

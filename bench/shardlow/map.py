@@ -92,17 +92,11 @@ def tuned_costs(timings):
     """Markdown: the cells timed at more than one neighbor skin in a fluid and mass's latest
     sitting (each integrator's own best tuning), fastest round per (cell, ranks, skin), and the
     implicit scheme's speed-up over fix shardlow with each at its fastest skin."""
-    usable = [r for r in timings if r.get("exit") == 0 and r.get("s_per_tu") and r.get("newton", "on") == "on"]
-    latest = {}
-    for r in usable:
-        key = (r["fluid"], r["mass"])
-        latest[key] = max(latest.get(key, ""), str(r.get("sitting", "")))
     best = {}
-    for r in usable:
-        if str(r.get("sitting", "")) != latest[(r["fluid"], r["mass"])]:
-            continue
-        key = (r["fluid"], r["mass"], r["integrator"], r["dt"], r.get("ranks", 1), r.get("skin", 0.3))
-        best[key] = min(best.get(key, np.inf), r["s_per_tu"])
+    for ranks in sorted({r.get("ranks", 1) for r in timings}):
+        for r in am._latest_sitting(timings, ranks, "s_per_tu", any_skin=True):
+            key = (r["fluid"], r["mass"], r["integrator"], r["dt"], ranks, r.get("skin", 0.3))
+            best[key] = min(best.get(key, np.inf), r["s_per_tu"])
     tuned = {k[:5] for k in best if k[5] != 0.3}
     lines = ["| fluid | m | integrator | dt | ranks | s per time unit, skin 0.3 | skin 0.7 | fastest |",
              "|---|---|---|---|---|---|---|---|"]

@@ -235,14 +235,14 @@ def _sitting(record):
     return (record.get("date", "")[:10], str(record.get("sitting", "")))
 
 
-def _latest_sitting(timings, ranks, wanted):
+def _latest_sitting(timings, ranks, wanted, any_skin=False):
     """The timings the tables use: successful rounds on that many ranks at the default settings
-    (skin 0.3, newton on) that have the field `wanted`, from the latest sitting that timed each
-    fluid and mass (cells are compared only with timings of the same sitting: a later sitting
-    may be on another machine)."""
+    (skin 0.3, or any skin with any_skin; newton on) that have the field `wanted`, from the
+    latest sitting that timed each fluid and mass (cells are compared only with timings of the
+    same sitting: a later sitting may be on another machine)."""
     usable = [r for r in timings
               if r.get("exit") == 0 and r.get(wanted) and r.get("ranks", 1) == ranks
-              and r.get("skin", 0.3) == 0.3 and r.get("newton", "on") == "on"]
+              and (any_skin or r.get("skin", 0.3) == 0.3) and r.get("newton", "on") == "on"]
     latest = {}
     for record in usable:
         key = (record["fluid"], record["mass"])
