@@ -8,5 +8,12 @@ cd "$(dirname "$0")"
 PLUGIN=${PLUGIN:-/tmp/accuracy/etddpdplugin.so}
 . ../../tools/lammps_env.sh
 export LMP PLUGIN
-/usr/bin/python3 run.py time-matrix --ranks 1 "$@"
-/usr/bin/python3 run.py time-matrix --ranks 2 "$@"
+# one sitting for every round, so that the tables compare them (run.py --sitting)
+S=$(date +%H%M)
+/usr/bin/python3 run.py time-matrix --ranks 1 --sitting "$S" "$@"
+/usr/bin/python3 run.py time-matrix --ranks 2 --sitting "$S" "$@"
+# each side at its own best neighbor skin against fix shardlow (bench/shardlow/map.md)
+for r in 1 2; do
+  /usr/bin/python3 run.py time --sitting "$S" --skin 0.7 --ranks $r --fluid GW --mass 0.01 --cell shardlow:0.004 imp:0.005
+  /usr/bin/python3 run.py time --sitting "$S" --skin 0.7 --ranks $r --fluid GW --mass 0.001 --cell shardlow:0.0007 imp:0.001
+done
