@@ -9,6 +9,7 @@
 #include "dpd_style_lookup.h"
 #include "error.h"
 #include "etd_coefficients.h"
+#include "fix_etd_options.h"
 #include "force.h"
 #include "memory.h"
 #include "update.h"
@@ -40,42 +41,19 @@ FixETDDiagonal::FixETDDiagonal(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   momentum_correction[0] = momentum_correction[1] = momentum_correction[2] = 0.0;
 
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (iarg + 2 > narg)
-      error->all(FLERR, "Illegal fix etd command: keyword {} needs a value", key);
-    const std::string value = arg[iarg + 1];
-    if (key == "order") {
-      if (value == "1")
-        order = 1;
-      else if (value == "2")
-        order = 2;
-      else
-        error->all(FLERR, "Illegal fix etd command: order must be 1 or 2, got {}", value);
-    } else if (key == "noise") {
-      if (value == "piecewise")
-        noise = Noise::Piecewise;
-      else if (value == "exact")
-        noise = Noise::Exact;
-      else
-        error->all(FLERR, "Illegal fix etd command: noise must be piecewise or exact, got {}",
-                   value);
-    } else if (key == "scheme") {
-      // 'scheme implicit' is a different class (fix_etd_implicit.cpp); diagonal is this one
-    } else if (key == "momentum") {
-      if (value == "conserve")
-        conserve_momentum = true;
-      else if (value == "none")
-        conserve_momentum = false;
-      else
-        error->all(FLERR, "Illegal fix etd command: momentum must be none or conserve, got {}",
-                   value);
-    } else {
-      error->all(FLERR, "Illegal fix etd command: unknown keyword {}", key);
-    }
-    iarg += 2;
-  }
+  etd::for_each_fix_etd_keyword(
+      lmp, narg, arg, [&](const std::string &key, const std::string &value) {
+        if (key == "order")
+          order = 1 + etd::fix_etd_choice(lmp, key, value, {"1", "2"});
+        else if (key == "noise")
+          noise = etd::fix_etd_choice(lmp, key, value, {"piecewise", "exact"}) == 0
+              ? Noise::Piecewise
+              : Noise::Exact;
+        else if (key == "momentum")
+          conserve_momentum = etd::fix_etd_choice(lmp, key, value, {"none", "conserve"}) == 1;
+        else if (key != "scheme")    // 'scheme implicit' is another class (fix_etd_implicit.cpp)
+          error->all(FLERR, "Illegal fix etd command: unknown keyword {}", key);
+      });
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -268,17 +246,7 @@ void FixETDDiagonal::update_angular_velocities()
       error->all(FLERR,
                  "Fix etd: rotating atoms need a radius and per-atom mass for their moment "
                  "of inertia (atom_style sphere)");
-    tagint local_bad = 0, bad = 0;
-    if (rotation_active)
-      for (int i = 0; i < atom->nlocal; i++)
-        if ((mask[i] & groupbit) && rmass[i] * radius[i] * radius[i] <= 0.0)
-          local_bad = MAX(local_bad, atom->tag[i]);
-    MPI_Allreduce(&local_bad, &bad, 1, MPI_LMP_TAGINT, MPI_MAX, world);
-    if (bad > 0)
-      error->all(FLERR,
-                 "Fix etd: atom {} has zero moment of inertia; give it a diameter (set "
-                 "... diameter) and a mass",
-                 bad);
+    if (rotation_active) etd::check_moments_of_inertia(lmp, groupbit, "Fix etd");
     rotation_checked = true;
   }
   if (!rotation_active || rotational.empty()) return;

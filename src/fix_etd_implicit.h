@@ -6,15 +6,12 @@
 #include "fix.h"
 
 #include "dpd_pair_interface.h"
-#include "dpd_random.h"
-#include "friction_operator.h"
+#include "fix_etd_options.h"
 #include "friction_solve.h"
+#include "implicit_pair_assembly.h"
+#include "implicit_partners.h"
 #include "neighbor_safety.h"
-#include "partner_exchange.h"
 
-#include <initializer_list>
-#include <memory>
-#include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -54,92 +51,41 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
   double **dissipative_random_split() const override { return split; }
 
  private:
-  bool overdamped;
-  bool midpoint;      // overdamped: predictor-corrector (default) or a single solve
-  bool warm_start;    // CG starts from the old velocities (else from the block-Jacobi solution)
-  double tolerance;
-  int max_iterations;
+  etd::ImplicitOptions options;
   double dt;
   class NeighList *list;
   bool list_newton_off;    // each image pair is listed from both ends
   std::vector<etd::DpdPairInterface *> dpd_styles;
-  std::vector<const etd::PairCoefficients *> pair_table;    // (ntypes+1)^2, nullptr: no DPD
-  std::vector<const etd::FpmCoefficients *> fpm_table;      // the same for dpd/fpm pairs
-  double friction_cutsq_max = 0.0;    // the largest squared friction cutoff of any type pair
+  etd::FrictionPairAssembly assembly;    // this step's pairs (implicit_pair_assembly.h)
   int dofs;    // unknowns per atom: 3 (v), or 6 (v and Omega) when dpd/fpm pairs take part
-  etd::PairNoise noise;
-  std::vector<etd::FrictionPair> pairs;    // this step's geometry
-  std::vector<etd::PairRun> pair_runs;     // its stretches of pairs with the same atom i
-  std::vector<double> pair_noise;          // and each pair's sigma w_R theta
-  std::vector<std::pair<tagint, tagint>> pair_tags;    // (its atom IDs, which key the noise)
-  std::vector<etd::FpmFrictionPair> fpm_pairs;         // dpd/fpm pairs of this step
-  std::vector<double> fpm_noise;                       // and their random forces (3 per pair)
-  std::vector<double> pair_distance;                   // r of each DPD pair (its virial)
-  // under remap v, each pair's velocity offset of j's moving image (3 per pair, zero for most)
-  std::vector<double> pair_offset, fpm_offset;
   etd::NeighborSafety neighbor_safety;
-  bool any_fixed_partner;    // some pair couples to an atom outside the group
-  // Under fix deform ... remap v: per owned atom (dofs values), G applied to the velocity
-  // offsets of the moving periodic images its pairs use (friction_operator.h), this step's
-  // constant part of the friction; empty without remap v
-  std::vector<double> image_friction;
-  bool image_velocity(int ghost, double offset[3]) const;
-
-  // The atoms G acts on, "partners": the owned atoms [0, nlocal), then one slot for each atom
-  // of another rank that a pair uses (partner_exchange.h). Images of owned atoms are the owned
-  // atoms themselves, and a pair that crosses ranks is held by both, each updating its own atom,
-  // so applying G needs one exchange of the slots' values and no reverse sum.
-  std::unique_ptr<etd::PartnerExchange> partners;
-  bigint partners_built;             // neighbor->ncalls of the list they were found from
-  int partner_slots;                 // remote atoms
-  std::vector<int> ghost_partner;    // per ghost (index - nlocal): its partner index, or -1
-  std::vector<int> slot_ghost;       // per slot: one ghost that is an image of it
-  void find_partners();
-  int npartners() const;    // owned atoms and slots
+  bool any_fixed_partner;       // some pair couples to an atom outside the group
+  etd::PartnerMap partners;     // the atoms G acts on (implicit_partners.h)
+  etd::GhostExchange ghosts;    // what the next forward (ghost) communication moves
 
   // per-partner vectors, dofs values each: G's operand; per owned atom, the preconditioner blocks
   std::vector<double> operand, diagonal;
-  // What the next forward (ghost) communication moves: per atom, 'width' values of each slot's
-  // vector, in one message for all slots (each exchange is a point where the ranks wait for
-  // each other); it may also carry the positions (with the periodic shift).
-  struct CommSlot {
-    std::vector<double> *vector;
-    int width;
-    bool image_counts =
-        false;    // 6 values per atom that gain the periodic shift (pbc) sent with it
-  };
-  static constexpr int max_comm_slots = 3;
-  CommSlot comm_slots[max_comm_slots];
-  int comm_nslots;
-  bool comm_positions;
-  void forward_exchange(std::initializer_list<CommSlot> slots, bool positions = false);
-  void accumulate_blocks(int block_values);
 
   // work vectors reused from step to step (per-step allocation costs page faults at scale)
   struct Work {
     std::vector<double> masses;    // solve(): per unknown, mass or moment of inertia
     std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia, predicted;    // the steps
-    std::vector<double> ghost_u, ghost_owner;    // per ghost: velocities, owner (rank, index)
-    std::vector<double> ghost_image;    // per ghost: its count of box vectors (pbc) from its owner
-    std::vector<double> mean, gmean;    // record_split()
+    std::vector<double> ghost_u;        // per ghost: velocities
+    std::vector<double> mean, gmean;    // the split and the virial
     std::vector<double> lead;    // post_integrate(): how far the next friction step moves each atom
-    std::vector<int> close;      // build_pairs(): one atom's neighbours within the friction cutoff
     etd::FrictionSolveWorkspace solve;
   } work;
 
   bool split_requested;
   int split_rows;    // rows of split allocated (atom->nmax at the last grow)
   double **split;
-  void overdamped_split(const std::vector<double> &velocity, const std::vector<double> &impulse);
-  void record_split(const std::vector<double> &random_force, double random_scale);
+  bool peratom_virial;    // a per-atom stress compute exists (stress/atom): fill vatom too
+  bool virial_wanted() const;
+  bool virial_this_step = false;    // virial_wanted(), decided once at the start of each step
   // The dissipative and random forces of the step's pairs, at the given velocities (owned atoms,
   // remote partners filled here): for compute dpd/split and the virial
   void record_friction_forces(const std::vector<double> &mean_velocity,
                               const std::vector<double> &random_force, double random_scale);
-  bool peratom_virial;    // a per-atom stress compute exists (stress/atom): fill vatom too
-  void tally_friction_virial();
-  bool virial_wanted() const;
-  bool virial_this_step = false;    // virial_wanted(), decided once at the start of each step
 
   int last_iterations;
   double last_residual;
@@ -155,25 +101,34 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
   void record_end_velocity();
   double atom_mass(int i) const;    // per-atom or per-type mass
 
+  // init()'s parts
+  void check_integrators();
+  void warn_force_fixes();
+  void check_rotation();
+  void request_neighbor_list();
+
   void kick(double fraction);
   void drift(double fraction);
   void build_pairs();
-  bool add_fpm_pair(const etd::FpmCoefficients &c, int i, int j, const double d[3], double rsq,
-                    double factor, tagint tag_i, tagint tag_j, std::int64_t step);
-  void random_impulse(double scale, std::vector<double> &impulse);
+  void check_missing_pairs(bool local_fixed_partner);
   void dof_inertia(std::vector<double> &inertia) const;
   double *dof_pointer(int i, int k) const;
   void apply_friction(const double *u, std::vector<double> &gu, bool group_only);
   void gather_operand(const double *u, bool group_only);
-  void accumulate_friction(const double *u, double *gu, double scale = 1.0) const;
+
+  // the step (fix_etd_implicit_step.cpp)
   void friction_noise_step();
+  void friction_step_rhs();
+  void conserve_momentum_and_measure();
   void overdamped_step();
   bool overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity,
                         bool singular_ok);
+  void overdamped_split(const std::vector<double> &velocity, const std::vector<double> &impulse);
   bool solve(const std::vector<double> &rhs, std::vector<double> &solution, double mass_weight,
              double friction_weight, bool deflate, bool singular_ok = false,
              const std::vector<double> *start = nullptr,
              const std::vector<double> *start_friction = nullptr);
+  void report_solve(const etd::SolverResult &result, double mass_weight, bool singular_ok);
 };
 
 }    // namespace LAMMPS_NS
