@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Throughput of ETD-DPD against stock LAMMPS DPD, side by side in one LAMMPS run per rank count.
-# Usage: bash bench/run_bench.sh [steps]      (writes bench/results/ and prints a table)
+# Usage: bash bench/run_bench.sh [steps]      (writes bench/results/: the logs and the table throughput.md)
 #        BENCH_RANKS="1" bash bench/run_bench.sh 300     (only these rank counts)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -15,4 +15,4 @@ for ranks in ${BENCH_RANKS:-1 2}; do
     -var plugin "$PLUGIN" -var steps "$steps" -log "$out/log.np$ranks" -screen none
 done
 logs=(); for ranks in ${BENCH_RANKS:-1 2}; do logs+=("$out/log.np$ranks"); done
-/usr/bin/python3 "$here/bench/throughput_table.py" "${logs[@]}"
+/usr/bin/python3 "$here/bench/throughput_table.py" "${logs[@]}" | tee "$out/throughput.md"    # the summary; the logs are not kept

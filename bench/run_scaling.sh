@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Cost per atom-step from about 3,000 to 200,000 atoms (one LAMMPS run per size, all styles side
-# by side, 1 rank). Usage: bash bench/run_scaling.sh [steps]   (writes bench/results/scaling/)
+# by side, 1 rank). Usage: bash bench/run_scaling.sh [steps]   (writes the logs to bench/results/scaling/, the table to bench/results/scaling.md)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 . "$here/tools/lammps_env.sh"
@@ -11,7 +11,7 @@ for side in 10 20 30 40; do    # 3,000, 24,000, 81,000, 192,000 atoms
   "$LMP" -in "$here/bench/in.scaling" -var plugin "$PLUGIN" -var side $side \
     -var steps "$steps" -log "$out/log.side$side" -screen none
 done
-/usr/bin/python3 - "$out" <<'PY'
+/usr/bin/python3 - "$out" <<'PY' | tee "$out/../scaling.md"    # the summary; the logs are not kept
 import glob, re, sys
 rows = {}
 for path in sorted(glob.glob(sys.argv[1] + "/log.side*"), key=lambda p: int(p.split("side")[1])):

@@ -7,10 +7,17 @@ seeds with its standard error, kBT likewise, and the deviation from the set's re
 A set without a reference of its own (HS at m = 0.01 and 0.001, where velocity-Verlet is out of
 reach) is compared with another set's: --ref-from SET=REFSET (repeatable).
 
-Usage: shear_table.py [--dir DIR] [--ref-from SET=REFSET ...] [PREFIX ...]   (default DIR:
-results/viscosity_shear; PREFIX e.g. "HS.m1.rate0.2." selects sets, "" is the GW m = 0.01 rate-2
-set; default: every set)
+The tables are made from the summary results/viscosity_shear.jsonl, one record per finished run
+(set, cell, seed and its RESULT line's numbers). The logs are not kept in the repository:
+viscosity_shear.sh ends with `shear_table.py --dir results/viscosity_shear`, which reads the
+logs there and merges their records into the summary (a record replaces the one of the same set,
+cell and seed), then prints the tables.
+
+Usage: shear_table.py [--summary FILE] [--dir DIR] [--ref-from SET=REFSET ...] [PREFIX ...]
+(default FILE: results/viscosity_shear.jsonl; --dir: merge DIR's logs into FILE first; PREFIX
+e.g. "HS.m1.rate0.2." selects sets, "" is the GW m = 0.01 rate-2 set; default: every set)
 """
+import json
 import os
 import re
 import sys
@@ -20,23 +27,65 @@ from etddpd.accuracy_matrix import mean_and_error, relative_deviation  # noqa: E
 
 LOG = re.compile(r"^log\.(?P<prefix>(?:[A-Za-z0-9.]+\.)?)(?P<cell>(?:ref|stock|impv?|diag)[0-9.]*?)\.(?P<seed>[0-9]+)$")
 RESULT = re.compile(r"^RESULT .* kT (?P<kT>[-0-9.eE+]+) eta (?P<eta>[-0-9.eE+]+)")
+RESULT_FIELDS = re.compile(r"^RESULT integ (?P<integ>\S+) dt (?P<dt>\S+) rate (?P<rate>\S+) .*"
+                           r"kT (?P<kT>\S+) eta (?P<eta>\S+) slope (?P<slope>\S+)")
 
 
-def read_runs(directory):
-    """{prefix: {cell: [(seed, eta, kT), ...]}} from the logs that finished (a RESULT line)."""
-    runs = {}
+def log_records(directory):
+    """One record per finished log of `directory`: set, cell, seed, kT, eta and, where the RESULT
+    line has them, integ, dt, rate and slope."""
+    records = []
     for name in sorted(os.listdir(directory)):
         match = LOG.match(name)
         if not match:
             continue
         with open(os.path.join(directory, name)) as log:
-            results = [RESULT.match(line) for line in log]
-        results = [r for r in results if r]
-        if not results:
+            lines = [line for line in log if RESULT.match(line)]
+        if not lines:
             continue
-        runs.setdefault(match["prefix"], {}).setdefault(match["cell"], []).append(
-            (int(match["seed"]), float(results[-1]["eta"]), float(results[-1]["kT"])))
+        record = {"set": match["prefix"], "cell": match["cell"], "seed": int(match["seed"])}
+        fields = RESULT_FIELDS.match(lines[-1])
+        if fields:
+            record.update(integ=fields["integ"], dt=float(fields["dt"]), rate=float(fields["rate"]),
+                          slope=float(fields["slope"]))
+        last = RESULT.match(lines[-1])
+        record.update(kT=float(last["kT"]), eta=float(last["eta"]))
+        records.append(record)
+    return records
+
+
+def read_summary(path):
+    """The records of a summary file (JSON lines); none if it does not exist."""
+    if not os.path.exists(path):
+        return []
+    with open(path) as summary:
+        return [json.loads(line) for line in summary if line.strip()]
+
+
+def merge_summary(path, records):
+    """Write `records` into the summary at `path`, replacing those of the same set, cell and seed;
+    sorted by set, cell and seed. Returns the merged records."""
+    key = lambda r: (r["set"], r["cell"], r["seed"])    # noqa: E731
+    merged = {key(r): r for r in read_summary(path)}
+    merged.update({key(r): r for r in records})
+    ordered = [merged[k] for k in sorted(merged)]
+    with open(path, "w") as summary:
+        for record in ordered:
+            summary.write(json.dumps(record) + "\n")
+    return ordered
+
+
+def runs_from_records(records):
+    """{prefix: {cell: [(seed, eta, kT), ...]}} from summary records."""
+    runs = {}
+    for r in sorted(records, key=lambda r: (r["set"], r["cell"], r["seed"])):
+        runs.setdefault(r["set"], {}).setdefault(r["cell"], []).append((r["seed"], r["eta"], r["kT"]))
     return runs
+
+
+def read_runs(directory):
+    """{prefix: {cell: [(seed, eta, kT), ...]}} from the logs that finished (a RESULT line)."""
+    return runs_from_records(log_records(directory))
 
 
 def table(cells, reference=None):
@@ -57,18 +106,23 @@ def table(cells, reference=None):
 
 
 def main(argv):
-    directory = os.path.join(os.path.dirname(os.path.abspath(__file__)), "results", "viscosity_shear")
+    summary = os.path.join(os.path.dirname(os.path.abspath(__file__)), "results", "viscosity_shear.jsonl")
+    directory = None
     ref_from = {}
-    while argv[:1] in (["--dir"], ["--ref-from"]):
+    needs = {"--dir": "DIR", "--summary": "FILE", "--ref-from": "SET=REFSET"}
+    while argv[:1] and argv[0] in needs:
         if len(argv) < 2 or (argv[0] == "--ref-from" and "=" not in argv[1]):
-            sys.exit(f"shear_table.py: {argv[0]} needs {'DIR' if argv[0] == '--dir' else 'SET=REFSET'}")
+            sys.exit(f"shear_table.py: {argv[0]} needs {needs[argv[0]]}")
         if argv[0] == "--dir":
             directory = argv[1]
+        elif argv[0] == "--summary":
+            summary = argv[1]
         else:
             target, source = argv[1].split("=", 1)
             ref_from[target] = source
         argv = argv[2:]
-    runs = read_runs(directory)
+    records = merge_summary(summary, log_records(directory)) if directory else read_summary(summary)
+    runs = runs_from_records(records)
     for target, source in ref_from.items():
         if "ref" not in runs.get(source, {}):
             sys.exit(f"shear_table.py: --ref-from {target}={source}: set '{source}' has no reference runs")

@@ -10,8 +10,9 @@
 #   implicit scheme at 0.005 (cell imp0.005); about 12 minutes
 #   m = 0.001: reference 0.00003, stock 0.0001, implicit 0.001 / 0.0015 and the options at 0.001
 #   (cell impv0.001); about 35 minutes
-# Writes results/viscosity_shear/log.<cell>.<seed> (m = 0.001: log.m0.001.<cell>.<seed>) and
-# prints the RESULT lines. SEEDS (default "1 2 3 4") selects seeds, to split the work; RATE
+# Writes results/viscosity_shear/log.<cell>.<seed> (m = 0.001: log.m0.001.<cell>.<seed>; not
+# kept in the repository), prints the RESULT lines and merges them into the summary
+# results/viscosity_shear.jsonl (shear_table.py --dir), which the tables are made from. SEEDS (default "1 2 3 4") selects seeds, to split the work; RATE
 # (default 2) the shear rate (logs then log.[m0.001.]rate<RATE>.<cell>.<seed>); CELLS (default
 # all) the cells to run, e.g. CELLS="impv0.001"; SKIN (default 0.3) the neighbor skin; TPROD
 # (default 4) the time units averaged (logs then log.[m...]tprod<TPROD>.<cell>.<seed>).
@@ -108,3 +109,4 @@ for seed in ${SEEDS:-1 2 3 4}; do
     run "${extra%%:*}" "$integ" "${extra#*:}" "$opts" $seed
   done
 done
+/usr/bin/python3 "$here/shear_table.py" --dir "$out" > /dev/null    # the summary

@@ -3,6 +3,7 @@
 writes (fix ave/time in scalar and vector mode, fix ave/chunk, fix ave/correlate, the thermo
 tables and loop times of a log, a dump), and on the committed output of the examples."""
 import os
+import shutil
 import sys
 import tempfile
 import unittest
@@ -13,6 +14,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(HERE, "..", "..")
 sys.path.insert(0, os.path.join(ROOT, "python"))
 from etddpd import lammps_output as lo  # noqa: E402
+from etddpd import study_records  # noqa: E402
 
 AVE_TIME = """# Time-averaged data for fix drag
 # TimeStep c_f[1] c_f[2] v_u
@@ -264,12 +266,22 @@ class Dump(Files):
 
 
 class CommittedFiles(unittest.TestCase):
-    """Output LAMMPS wrote for the examples: every header names every column."""
+    """Output LAMMPS wrote for the examples: every header names every column. A study that keeps
+    its files in results/records.json (python/etddpd/study_records.py) has them read from there."""
 
     def path(self, name):
         path = os.path.join(ROOT, name)
-        if not os.path.exists(path):
+        if os.path.exists(path):
+            return path
+        results, _, relative = name.partition("/results/")
+        records = study_records.read(os.path.join(ROOT, results, "results", "records.json"))
+        if relative not in records:
             self.skipTest(f"{name} is not in this checkout")
+        directory = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, directory)
+        path = os.path.join(directory, os.path.basename(relative))
+        with open(path, "w") as handle:
+            handle.write(records[relative])
         return path
 
     def test_ave_time(self):

@@ -65,11 +65,29 @@ class ShearTable(unittest.TestCase):
         with tempfile.TemporaryDirectory() as directory:
             write_log(directory, "log.HS.m0.01.rate0.2.imp.1", 29.0)
             with self.assertRaises(SystemExit) as stop:
-                shear_table.main(["--dir", directory, "--ref-from", "HS.m0.01.rate0.2.=HS.m0.1.rate0.2."])
+                shear_table.main(["--summary", os.path.join(directory, "s.jsonl"), "--dir", directory,
+                                  "--ref-from", "HS.m0.01.rate0.2.=HS.m0.1.rate0.2."])
             self.assertIn("has no reference runs", str(stop.exception))
             with self.assertRaises(SystemExit) as stop:
-                shear_table.main(["--dir", directory, "--ref-from", "HS.m0.01.rate0.2."])
+                shear_table.main(["--summary", os.path.join(directory, "s.jsonl"), "--dir", directory,
+                                  "--ref-from", "HS.m0.01.rate0.2."])
             self.assertIn("SET=REFSET", str(stop.exception))
+
+    def test_summary_merges_new_logs_and_gives_the_same_runs(self):
+        with tempfile.TemporaryDirectory() as directory:
+            summary = os.path.join(directory, "viscosity_shear.jsonl")
+            write_log(directory, "log.P.m1.ref.1", 2.0)
+            write_log(directory, "log.P.m1.imp.1", 2.2)
+            shear_table.merge_summary(summary, shear_table.log_records(directory))
+            os.remove(os.path.join(directory, "log.P.m1.ref.1"))    # logs are not kept
+            write_log(directory, "log.P.m1.imp.1", 2.1)             # a re-run replaces its record
+            write_log(directory, "log.P.m1.imp.2", 2.3)
+            records = shear_table.merge_summary(summary, shear_table.log_records(directory))
+            runs = shear_table.runs_from_records(shear_table.read_summary(summary))
+            self.assertEqual(len(records), 3)
+            self.assertEqual(runs["P.m1."]["ref"], [(1, 2.0, 1.0)])
+            self.assertEqual(runs["P.m1."]["imp"], [(1, 2.1, 1.0), (2, 2.3, 1.0)])
+            self.assertEqual(records[0]["integ"], "stock")    # the RESULT line's fields are kept
 
 
 if __name__ == "__main__":

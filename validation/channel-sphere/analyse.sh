@@ -1,10 +1,14 @@
 #!/bin/bash
-# Tables and figures of validation/channel-sphere/README.md from the drag and wall-radius files in
-# results/ (figures into figures/). Run from anywhere: bash validation/channel-sphere/analyse.sh
-# (system Python with numpy and matplotlib)
+# Tables and figures of validation/channel-sphere/README.md from the drag, wall-radius and profile
+# files of the runs (figures into figures/). Run from anywhere: bash validation/channel-sphere/analyse.sh
+# (system Python with numpy and matplotlib). The files are kept in one JSON file,
+# results/records.json, and written out into results/ where a run has not left its own (the logs
+# and the files themselves are not kept in the repository). After new runs, merge their files in:
+#   python/study_records.py pack validation/channel-sphere/results validation/channel-sphere/results/records.json
 set -e
 cd "$(dirname "${BASH_SOURCE[0]}")/results"
 PY=${PY:-/usr/bin/python3}
+$PY ../../../python/study_records.py unpack records.json . > /dev/null
 T=../../../python/channel_sphere.py
 F=../figures
 echo "== shear flow, 56-particle sphere and one-particle colloid (U = mean fluid velocity)"

@@ -2,8 +2,9 @@
 # The shear viscosity of the sphere-couette solvent (n = 4, a = 18.75, sigma = 2 so gamma = 8,
 # s = 1/2, kBT = 0.25, m = 0.01) against the shear rate, by homogeneous shear with Lees-Edwards
 # boundaries (examples/shear/in.shear with kT 0.25 gamma 8.0): the paper normalises its drag with
-# eta = 3.9682. Writes results/solvent_viscosity/log.<integ>.<rate>.<seed> and prints the RESULT
-# lines. About 20 minutes of one core.
+# eta = 3.9682. Writes results/solvent_viscosity/log.<integ>.<rate>.<seed> (not kept in the
+# repository), prints the RESULT lines and collects them, one line per run, in the summary
+# results/solvent_viscosity.txt. About 20 minutes of one core.
 # Usage: bash validation/sphere-couette/solvent_viscosity.sh
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -25,3 +26,4 @@ run implicit 0.001 0.2 12 1.5 6
 for seed in 11 12; do run implicit 0.001 0.5 $seed 1.5 4; done
 run stock 0.0002 0.2 11 1.0 3
 run stock 0.0002 0.5 11 1.0 2
+grep -H '^RESULT' log.* | sed 's/^log\.//; s/:RESULT / /' > "$here/results/solvent_viscosity.txt"    # the summary
