@@ -35,6 +35,53 @@ struct SolverResult {
   bool converged = false;
 };
 
+namespace cg_detail {
+// z = P r, projected (a separate pass: fused into the update loop, that loop no longer vectorises)
+template <typename Project>
+inline void precondition(int n, const double *inv_diag, const double *block_inverse,
+                         const double *r, double *z, Project &project)
+{
+  if (!block_inverse) {
+    for (int k = 0; k < n; k++) z[k] = inv_diag[k] * r[k];
+  } else {
+    for (int a = 0; a < n / 3; a++) {
+      const double *m = block_inverse + 9 * a;
+      const double *ra = r + 3 * a;
+      for (int k = 0; k < 3; k++)
+        z[3 * a + k] = (inv_diag[3 * a + k] != 0.0)
+            ? m[3 * k] * ra[0] + m[3 * k + 1] * ra[1] + m[3 * k + 2] * ra[2]
+            : 0.0;
+    }
+  }
+  project(z);
+}
+
+// The one reduction of an iteration (this rank's share): rz = (r,z), wz = (w,z), rr = (r,r),
+// and for the next residual's norm rw = (r,w), rs = (r,s), ww = (w,w), ws = (w,s), ss = (s,s),
+// with s the previous A p; bb = (b,b) with_b. w = A z is first zeroed on held unknowns (so
+// that r, updated by s, stays zero there), in the same pass.
+enum { RZ, WZ, RR, RW, RS, WW, WS, SS, BB, NSUMS };
+inline void local_sums(int n, const double *inv_diag, const double *b, const double *r,
+                       const double *z, double *w, const double *s, bool with_b,
+                       double sums[NSUMS])
+{
+  for (int k = 0; k < NSUMS; k++) sums[k] = 0.0;
+  for (int k = 0; k < n; k++) {
+    if (inv_diag[k] == 0.0) w[k] = 0.0;
+    sums[RZ] += r[k] * z[k];
+    sums[WZ] += w[k] * z[k];
+    sums[RR] += r[k] * r[k];
+    sums[RW] += r[k] * w[k];
+    sums[RS] += r[k] * s[k];
+    sums[WW] += w[k] * w[k];
+    sums[WS] += w[k] * s[k];
+    sums[SS] += s[k] * s[k];
+  }
+  if (with_b)
+    for (int k = 0; k < n; k++) sums[BB] += b[k] * b[k];
+}
+}    // namespace cg_detail
+
 // block_inverse (optional, 9 values per atom, n = 3 atoms): block-Jacobi preconditioning, which
 // also couples the components of one atom; inv_diag then only marks the held unknowns.
 // project (optional): removes a null space (the uniform translation of a singular G) from the
@@ -57,44 +104,14 @@ conjugate_gradient(int n, Apply apply, GlobalSum global_sum, const double *inv_d
   // r: residual, z: preconditioned residual, w = A z, p: search direction, s = A p
   double *r = work.r.data(), *z = work.z.data(), *p = work.p.data(), *w = work.w.data(),
          *s = work.s.data();
-  // z = P r, projected (a separate pass: fused into the update loop, that loop no longer vectorises)
   auto precondition = [&]() {
-    if (!block_inverse) {
-      for (int k = 0; k < n; k++) z[k] = inv_diag[k] * r[k];
-    } else {
-      for (int a = 0; a < n / 3; a++) {
-        const double *m = block_inverse + 9 * a;
-        const double *ra = r + 3 * a;
-        for (int k = 0; k < 3; k++)
-          z[3 * a + k] = (inv_diag[3 * a + k] != 0.0)
-              ? m[3 * k] * ra[0] + m[3 * k + 1] * ra[1] + m[3 * k + 2] * ra[2]
-              : 0.0;
-      }
-    }
-    project(z);
+    cg_detail::precondition(n, inv_diag, block_inverse, r, z, project);
   };
-  // the one reduction of an iteration: rz = (r,z), wz = (w,z), rr = (r,r), and for the next
-  // residual's norm rw = (r,w), rs = (r,s), ww = (w,w), ws = (w,s), ss = (s,s), with s the
-  // previous A p. w = A z is first zeroed on held unknowns (so that r, updated by s, stays zero
-  // there), in the same pass.
-  enum { RZ, WZ, RR, RW, RS, WW, WS, SS, BB, NSUMS };
+  using namespace cg_detail;
   double sums[NSUMS];
   auto apply_and_reduce = [&](bool with_b) {
     apply(z, w);
-    for (double &v : sums) v = 0.0;
-    for (int k = 0; k < n; k++) {
-      if (inv_diag[k] == 0.0) w[k] = 0.0;
-      sums[RZ] += r[k] * z[k];
-      sums[WZ] += w[k] * z[k];
-      sums[RR] += r[k] * r[k];
-      sums[RW] += r[k] * w[k];
-      sums[RS] += r[k] * s[k];
-      sums[WW] += w[k] * w[k];
-      sums[WS] += w[k] * s[k];
-      sums[SS] += s[k] * s[k];
-    }
-    if (with_b)
-      for (int k = 0; k < n; k++) sums[BB] += b[k] * b[k];
+    local_sums(n, inv_diag, b, r, z, w, s, with_b, sums);
     global_sum(sums, with_b ? NSUMS : BB);
   };
 
