@@ -16,6 +16,20 @@
 
 namespace {
 
+// Diagonal of G per atom and component: sum_j gamma w_D e_alpha^2 (the Jacobi preconditioner).
+template <typename UpdateJ>
+void accumulate_diagonal(const std::vector<etd::FrictionPair> &pairs, double *diag,
+                                UpdateJ update_j)
+{
+  for (const etd::FrictionPair &p : pairs)
+    for (int k = 0; k < 3; k++) {
+      const double g = p.friction * p.e[k] * p.e[k];
+      diag[3 * p.i + k] += g;
+      if (update_j(p.j)) diag[3 * p.j + k] += g;
+    }
+}
+
+
 // A dense DPD cluster: n = 4 in a periodic 3^3 box, s = 1/2, gamma = 4.5, kBT = 1.
 struct Cluster {
   int natoms = 108;
@@ -77,7 +91,7 @@ int pade_step(const Cluster &c, double m, double h, long step, std::vector<doubl
   etd::accumulate_friction(pairs, v.data(), gv.data(), all_local);
   for (int k = 0; k < n; k++) b[k] = m * v[k] - 0.5 * h * gv[k];
   etd::accumulate_noise(pairs, noise, std::sqrt(h), b.data(), all_local);
-  etd::accumulate_diagonal(pairs, diag.data(), all_local);
+  accumulate_diagonal(pairs, diag.data(), all_local);
   for (int k = 0; k < n; k++) inv_diag[k] = 1.0 / (m + 0.5 * h * diag[k]);
   auto apply = [&](const double *u, double *au) {
     for (int k = 0; k < n; k++) au[k] = m * u[k];
@@ -230,7 +244,7 @@ TEST(FrictionOperator, ConjugateGradientSolvesToTolerance)
   const int n = 3 * c.natoms;
   const double m = 0.001, h = 0.01;
   std::vector<double> diag(n, 0.0), inv_diag(n), b(n), x(n, 0.0);
-  etd::accumulate_diagonal(c.pairs, diag.data(), all_local);
+  accumulate_diagonal(c.pairs, diag.data(), all_local);
   for (int k = 0; k < n; k++) {
     inv_diag[k] = 1.0 / (m + 0.5 * h * diag[k]);
     b[k] = std::sin(k);
@@ -263,7 +277,7 @@ TEST(FrictionOperator, ConjugateGradientNeedsOneReductionPerIteration)
   const int n = 3 * c.natoms;
   const double m = 0.001, h = 0.01;
   std::vector<double> diag(n, 0.0), inv_diag(n), b(n);
-  etd::accumulate_diagonal(c.pairs, diag.data(), all_local);
+  accumulate_diagonal(c.pairs, diag.data(), all_local);
   for (int k = 0; k < n; k++) {
     inv_diag[k] = 1.0 / (m + 0.5 * h * diag[k]);
     b[k] = std::cos(0.7 * k);
@@ -338,7 +352,7 @@ TEST(FrictionOperator, ZeroMassLimitMatchesOverdampedSolve)
   const auto noise = c.noise(5);
   std::vector<double> b(n, 0.0), diag(n, 0.0), inv_diag(n), overdamped(n, 0.0);
   etd::accumulate_noise(pairs, noise, 1.0 / std::sqrt(h), b.data(), all_local);
-  etd::accumulate_diagonal(pairs, diag.data(), all_local);
+  accumulate_diagonal(pairs, diag.data(), all_local);
   for (int k = 0; k < n; k++) inv_diag[k] = 1.0 / diag[k];
   auto apply_g = [&](const double *u, double *gu) {
     for (int k = 0; k < n; k++) gu[k] = 0.0;

@@ -136,19 +136,6 @@ inline void accumulate_noise(const std::vector<FrictionPair> &pairs,
   }
 }
 
-// Diagonal of G per atom and component: sum_j gamma w_D e_alpha^2 (the Jacobi preconditioner).
-template <typename UpdateJ>
-inline void accumulate_diagonal(const std::vector<FrictionPair> &pairs, double *diag,
-                                UpdateJ update_j)
-{
-  for (const FrictionPair &p : pairs)
-    for (int k = 0; k < 3; k++) {
-      const double g = p.friction * p.e[k] * p.e[k];
-      diag[3 * p.i + k] += g;
-      if (update_j(p.j)) diag[3 * p.j + k] += g;
-    }
-}
-
 // Per-atom 3x3 diagonal blocks of G, sum_j gamma w_D e e^T (6 values: xx yy zz xy xz yz), for
 // the block-Jacobi preconditioner.
 template <typename UpdateJ>

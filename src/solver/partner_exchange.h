@@ -102,8 +102,6 @@ class PartnerExchange {
   }
 
   int slots() const { return slots_; }
-  int source_ranks() const { return static_cast<int>(sources_.size()); }
-  int target_ranks() const { return static_cast<int>(targets_.size()); }
   // atoms this rank sends in one exchange
   int sent_atoms() const
   {
