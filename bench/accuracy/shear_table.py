@@ -126,15 +126,20 @@ def main(argv):
     for target, source in ref_from.items():
         if "ref" not in runs.get(source, {}):
             sys.exit(f"shear_table.py: --ref-from {target}={source}: set '{source}' has no reference runs")
+    steps = {(r["set"], r["cell"]): (r.get("integ", ""), r.get("dt", "")) for r in records}
+    print("# Viscosity under homogeneous shear, eta = -<P_xy> / rate (bench/accuracy/shear_table.py, "
+          "from results/viscosity_shear.jsonl)")
     for prefix in (argv or sorted(runs)):
         source = ref_from.get(prefix)
-        print(f"\n{prefix or '(GW m = 0.01, rate 2)'}" + (f" (against the reference of {source})" if source else "") + "\n")
-        print("| cell | seeds | eta | kBT | against the reference |")
-        print("|---|---|---|---|---|")
+        print(f"\n## {prefix or '(GW m = 0.01, rate 2)'}" + (f" (against the reference of {source})" if source else "") + "\n")
+        print("| cell | integrator | dt | seeds | eta | kBT | against the reference |")
+        print("|---|---|---|---|---|---|---|")
         reference = runs[source]["ref"] if source else None
         for cell, n, eta, error, kT, deviation, deviation_error in table(runs.get(prefix, {}), reference):
             against = "" if deviation is None else f"{deviation:+.1f} +- {deviation_error:.1f} %"
-            print(f"| {cell} | {n} | {eta:.4g} +- {error:.2g} | {kT:.3f} | {against} |")
+            integ, dt = steps.get((prefix, cell), ("", ""))
+            print(f"| {cell} | {integ} | {dt:g} | {n} | {eta:.4g} +- {error:.2g} | {kT:.3f} | {against} |"
+                  if dt != "" else f"| {cell} | {integ} | | {n} | {eta:.4g} +- {error:.2g} | {kT:.3f} | {against} |")
 
 
 if __name__ == "__main__":

@@ -1,14 +1,16 @@
 #!/bin/bash
 # Tables and figures of validation/channel-sphere/README.md from the drag, wall-radius and profile
-# files of the runs (figures into figures/). Run from anywhere: bash validation/channel-sphere/analyse.sh
+# files of the runs: the tables into results/tables.txt (and on the screen), the figures into
+# figures/. Run from anywhere: bash validation/channel-sphere/analyse.sh
 # (system Python with numpy and matplotlib). The files are kept in one JSON file,
 # results/records.json, and written out into results/ where a run has not left its own (the logs
 # and the files themselves are not kept in the repository). After new runs, merge their files in:
 #   python/study_records.py pack validation/channel-sphere/results validation/channel-sphere/results/records.json
-set -e
+set -e -o pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/results"
 PY=${PY:-/usr/bin/python3}
 $PY ../../../python/study_records.py unpack records.json . > /dev/null
+{
 T=../../../python/channel_sphere.py
 F=../figures
 echo "== shear flow, 56-particle sphere and one-particle colloid (U = mean fluid velocity)"
@@ -176,3 +178,4 @@ $PY $T drag --force total drag.U0.9 drag.U0.9_dt0.005
 $PY $T shells profiles.U0.9_nx120_profiles --discard 0
 $PY $T shells profiles.U0.9_nx120_profiles --discard 0 --fit-from 2.5 --fit-to 5
 $PY $T line line.U0.9_nx120_profiles --discard 0
+} | tee tables.txt

@@ -48,7 +48,8 @@ fi
 rm -f "$out/scan_plugin.so"
 # the mid-plane maps (up to 3 MB a run) are summarised in each table.txt and not kept
 rm -f "$out"/s*_seed*/map.sphere-couette
-/usr/bin/python3 "$root/python/sphere_couette_sizes.py" "$out"/s[0-9].[0-9]_seed* | tee "$out/summary.txt"
+# run names relative to results/size_scan, so the summary reads the same on any machine
+(cd "$out" && /usr/bin/python3 "$root/python/sphere_couette_sizes.py" s[0-9].[0-9]_seed*) | tee "$out/summary.txt"
 if ls -d "$out"/s0.6_implicit_seed* > /dev/null 2>&1; then
-  /usr/bin/python3 "$root/python/sphere_couette_sizes.py" "$out"/s0.6_implicit_seed* | tee "$out/summary_implicit.txt"
+  (cd "$out" && /usr/bin/python3 "$root/python/sphere_couette_sizes.py" s0.6_implicit_seed*) | tee "$out/summary_implicit.txt"
 fi
