@@ -23,7 +23,7 @@ out=$(mkdir -p "$2" && cd "$2" && pwd)
 source "$here/../lammps_env.sh"
 mpirun=(mpirun --allow-run-as-root --oversubscribe)
 failed=0
-cases=(gen_nve gen_implicit gen_overdamped gen_diagonal gen_hybrid fpm_nve fpm_implicit)
+cases=(gen_nve gen_implicit gen_overdamped gen_diagonal gen_hybrid fpm_nve fpm_implicit fpm_diagonal)
 [ $# -gt 2 ] && cases=("${@:3}")
 for case in "${cases[@]}"; do
   extra=""
