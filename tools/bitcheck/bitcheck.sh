@@ -4,7 +4,7 @@
 #                                                      # into DIR, from the current build
 #   bash tools/bitcheck/bitcheck.sh compare A B  # lists the dumps of A and B that differ
 # Cases: dpd/gen with nve, the implicit scheme (inertial, overdamped), the diagonal scheme and a
-
+# hybrid/overlay; dpd/fpm with nve/sphere and both schemes; each on 1 and 2 ranks, newton
 # on and off, straight through and across a restart at step 100. LMP and PLUGIN as in
 # tools/lammps_env.sh.
 set -euo pipefail
