@@ -255,7 +255,8 @@ void PairDPDBase::eval(const typename Law::Coefficients *table, int stride)
 
 // The pair's contributions to the friction diagonal (i's summed in gi, gri) and to the split.
 template <class Law, int FRICTION, int SPLIT>
-void PairDPDBase::add_extras(const Law &pair, int i, int j, bool update_j, double *gi, double *gri)
+ETD_PAIR_INLINE void PairDPDBase::add_extras(const Law &pair, int i, int j, bool update_j,
+                                             double *gi, double *gri)
 {
   if (FRICTION && want_friction) {
     double gt[3], gr[3];
@@ -289,8 +290,9 @@ void PairDPDBase::add_extras(const Law &pair, int i, int j, bool update_j, doubl
 // The pair's energy and virial: from |F|/r where the force is central (as LAMMPS's pair styles
 // tally), else from its components.
 template <class Law, int DISSIPATIVE>
-void PairDPDBase::tally(const Law &pair, const typename Law::Coefficients &c,
-                        const etd::PairGeometry &g, int i, int j, int nlocal, int newton_pair)
+ETD_PAIR_INLINE void PairDPDBase::tally(const Law &pair, const typename Law::Coefficients &c,
+                                        const etd::PairGeometry &g, int i, int j, int nlocal,
+                                        int newton_pair)
 {
   const double evdwl = eflag_either ? Law::energy(c, g.rsq, g.r, g.special) : 0.0;
   if (Law::central || !DISSIPATIVE)

@@ -141,12 +141,15 @@ TEST(ToyPairStyle, ImplicitSchemeTakesItsFriction)
   ASSERT_EQ(toy.size(), gen.size());
   for (size_t k = 0; k < toy.size(); k++) ASSERT_EQ(toy[k], gen[k]) << k;
 
-  // with a != 0 it runs and stays near the set temperature
-  Lammps l;
-  register_toy(l);
-  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
-          "neigh_modify every 1 delay 0 check yes", "read_data " + data, "mass 1 0.05",
-          "timestep 0.01", "pair_style dpd/toy 1.0 1.0 77", "pair_coeff * * 25.0 4.5",
-          "fix 1 all etd scheme implicit", "run 200 post no"});
-  EXPECT_NEAR(l.thermo("temp"), 1.0, 0.3);
+  // with a != 0 it runs under both schemes (the diagonal one takes the friction diagonal
+  // from the pair loop) and stays near the set temperature
+  for (const std::string scheme : {"implicit", "diagonal"}) {
+    Lammps l;
+    register_toy(l);
+    l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+            "neigh_modify every 1 delay 0 check yes", "read_data " + data, "mass 1 0.05",
+            "timestep 0.01", "pair_style dpd/toy 1.0 1.0 77", "pair_coeff * * 25.0 4.5",
+            "fix 1 all etd scheme " + scheme, "run 200 post no"});
+    EXPECT_NEAR(l.thermo("temp"), 1.0, 0.3) << scheme;
+  }
 }
