@@ -7,7 +7,7 @@
 //   static const Friction &friction(const Coefficients &);   that fix etd's implicit scheme applies
 //   static constexpr bool rotation;           acts on angular velocities, puts torques
 //   static constexpr bool central;            its full force lies along e (virial from fpair)
-//   template <bool DISSIPATIVE> ETD_PAIR_INLINE void evaluate(const PairMotion &, const PairStep &);
+//   template <bool DISSIPATIVE> void evaluate(const PairMotion &, const PairStep &);
 //       fills force (on i; -force on j), fpair (|F|/r where the force is central: always for
 //       central laws, and for every law with DISSIPATIVE false, when only the conservative
 //       force is computed) and torque (on each of i and j; with rotation and DISSIPATIVE)
@@ -18,6 +18,7 @@
 //   static double energy(const Coefficients &, double rsq, double r, double special);
 //       the conservative force along e and its energy (zero beyond the conservative cutoff),
 //       for the energy tally and Pair::single.
+// evaluate, friction_diagonal and split are declared ETD_PAIR_INLINE.
 #ifndef ETD_PAIR_LAW_H
 #define ETD_PAIR_LAW_H
 
@@ -26,9 +27,8 @@
 
 #include <cstdint>
 
-// A law's per-pair functions are inlined into the pair loop: out of line, the law's state
-// would go through memory (with dpd/fpm's, GCC left evaluate out of line and the loop took 1.7
-// times as long).
+// A law's per-pair functions are inlined into the pair loop: out of line, the law's state goes
+// through memory (GCC's own choice for dpd/fpm's evaluate made its loop 1.7 times as slow).
 #if defined(__GNUC__)
 #define ETD_PAIR_INLINE inline __attribute__((always_inline))
 #define ETD_PAIR_NOINLINE __attribute__((noinline))
