@@ -9,6 +9,7 @@
 
 #include "force.h"
 #include "lammps.h"
+#include "library.h"
 #include "version.h"
 
 #include <cmath>
@@ -99,10 +100,20 @@ TEST(ToyPairStyle, ForceEnergyAndSingleAsTheLaw)
   const double x = r / rc;
   EXPECT_NEAR(l.thermo("pe"), a * rc * ((1.0 - x) - (1.0 - x * x * x) / 3.0), 1e-12);
 
-  // single(), through compute pair/local: the conservative part
-  l.cmds({"compute pairs all pair/local dist eng force", "compute sum all reduce sum c_pairs[3]",
-          "thermo_style custom step c_sum", "run 0 post no"});
-  EXPECT_NEAR(l.compute_scalar("sum"), conservative, 1e-12);
+  // single(), through compute pair/local: the conservative part (the pair's row on one rank)
+  l.cmds({"compute pairs all pair/local dist eng force", "run 0 post no"});
+  const int rows =
+      *static_cast<int *>(lammps_extract_compute(l.lmp, "pairs", LMP_STYLE_LOCAL, LMP_SIZE_ROWS));
+  auto **local = static_cast<double **>(
+      lammps_extract_compute(l.lmp, "pairs", LMP_STYLE_LOCAL, LMP_TYPE_ARRAY));
+  double mine[2] = {0.0, 0.0}, all[2];    // force, energy
+  for (int row = 0; row < rows; row++) {
+    mine[0] += local[row][2];
+    mine[1] += local[row][1];
+  }
+  MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_SUM, l.comm);
+  EXPECT_NEAR(all[0], conservative, 1e-12);
+  EXPECT_NEAR(all[1], a * rc * ((1.0 - x) - (1.0 - x * x * x) / 3.0), 1e-12);
 }
 
 TEST(ToyPairStyle, CoefficientErrorsFromItsDescription)
