@@ -17,14 +17,6 @@
 using namespace LAMMPS_NS;
 
 namespace {
-Pair *create_pair_dpd_gen(LAMMPS *lmp)
-{
-  return new PairDPDGen(lmp);
-}
-Pair *create_pair_dpd_fpm(LAMMPS *lmp)
-{
-  return new PairDPDFPM(lmp);
-}
 Compute *create_compute_dpd_split(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputeDPDSplit(lmp, narg, arg);
@@ -68,16 +60,8 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.author = "ETD-DPD developers";
   plugin.handle = handle;
 
-  plugin.style = "pair";
-  plugin.name = "dpd/gen";
-  plugin.info = "ETD-DPD generalised DPD: exponent s, separate conservative/dissipative cutoffs";
-  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair_dpd_gen;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.name = "dpd/fpm";
-  plugin.info = "ETD-DPD FPM-style DPD: central and shear drag, angular velocities and torques";
-  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair_dpd_fpm;
-  (*register_plugin)(&plugin, lmp);
+  register_pair_style<PairDPDGenStyle>(plugin, register_plugin, lmp);
+  register_pair_style<PairDPDFPMStyle>(plugin, register_plugin, lmp);
 
   plugin.style = "compute";
   plugin.name = "dpd/split";

@@ -1,4 +1,5 @@
-// ETD-DPD: the common part of pair_style dpd/gen and dpd/fpm (see pair_dpd_base.h).
+// ETD-DPD: the common part of the package's pair styles (see pair_dpd_base.h); their
+// coefficients are in pair_dpd_coeffs.cpp.
 #include "pair_dpd_base.h"
 
 #include "atom.h"
@@ -15,13 +16,13 @@
 
 using namespace LAMMPS_NS;
 
-PairDPDBase::PairDPDBase(LAMMPS *lmp, const char *style, bool rotation_) :
-    Pair(lmp), style_name(style), rotation(rotation_),
+PairDPDBase::PairDPDBase(LAMMPS *lmp, const etd::CoeffDescription &coefficients, bool rotation_) :
+    Pair(lmp), description(coefficients), style_name(coefficients.style), rotation(rotation_),
     split_values(rotation_ ? FORCE_SPLIT_VALUES + TORQUE_SPLIT_VALUES : FORCE_SPLIT_VALUES),
     temperature(0.0), cut_global(0.0), seed(0), cut(nullptr), want_friction(false),
     want_split(false), conservative_only(false), neigh_request(), list_newton_off(false),
-    fdotr_turned_off(false), friction(nullptr), rot_friction(nullptr),
-    split(nullptr), nmax_extras(0)
+    fdotr_turned_off(false), friction(nullptr), rot_friction(nullptr), split(nullptr),
+    nmax_extras(0)
 {
   writedata = 1;
   restartinfo = 1;
@@ -34,7 +35,8 @@ PairDPDBase::~PairDPDBase()
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
-    memory->destroy(cut);
+    for (double **values : coeff_values) memory->destroy(values);
+    for (int **given : coeff_given) memory->destroy(given);
   }
   memory->destroy(friction);
   memory->destroy(rot_friction);
@@ -47,12 +49,22 @@ void PairDPDBase::allocate_base()
   const int n = atom->ntypes;
   memory->create(setflag, n + 1, n + 1, "pair:setflag");
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
-  memory->create(cut, n + 1, n + 1, "pair:cut");
   for (int i = 0; i <= n; i++)
-    for (int j = 0; j <= n; j++) {
-      setflag[i][j] = 0;
-      cut[i][j] = 0.0;
+    for (int j = 0; j <= n; j++) setflag[i][j] = 0;
+  coeff_values.assign(description.count, nullptr);
+  coeff_given.assign(description.count, nullptr);
+  for (int p = 0; p < description.count; p++) {
+    const etd::CoeffParam &param = description.params[p];
+    memory->create(coeff_values[p], n + 1, n + 1, "pair:coeff");
+    for (int i = 0; i <= n; i++)
+      for (int j = 0; j <= n; j++) coeff_values[p][i][j] = param.default_value;
+    if (param.default_from == etd::DEFAULT_CUTOFF) cut = coeff_values[p];
+    if (param.default_from >= 0) {
+      memory->create(coeff_given[p], n + 1, n + 1, "pair:coeff_given");
+      for (int i = 0; i <= n; i++)
+        for (int j = 0; j <= n; j++) coeff_given[p][i][j] = 0;
     }
+  }
 }
 
 bool PairDPDBase::type_pair_set(int i, int j) const
@@ -98,6 +110,11 @@ void PairDPDBase::settings(int narg, char **arg)
 
 void PairDPDBase::init_style()
 {
+  if (rotation && (!atom->omega_flag || !atom->torque_flag))
+    error->all(FLERR,
+               "Pair style {} requires atoms with angular velocity and torque "
+               "(atom_style sphere, or hybrid with sphere)",
+               style_name);
   if (comm->ghost_velocity == 0)
     error->all(FLERR,
                "Pair style {} requires ghost atoms store velocity: use 'comm_modify vel yes'",

@@ -1,42 +1,40 @@
 // ETD-DPD: pair_style dpd/fpm, DPD with central and shear drag, angular velocities and torques
-// (see doc/pair_dpd_fpm.rst).
+// (see doc/pair_dpd_fpm.rst): the law of fpm_kernel.h.
 #ifndef ETD_PAIR_DPD_FPM_H
 #define ETD_PAIR_DPD_FPM_H
 
 #include "fpm_kernel.h"
-#include "pair_dpd_base.h"
-
-#include <vector>
+#include "pair_dpd_style.h"
 
 namespace LAMMPS_NS {
 
-class PairDPDFPM : public PairDPDBase {
- public:
-  PairDPDFPM(class LAMMPS *);
-  ~PairDPDFPM() override;
-  void compute(int, int) override;
-  void coeff(int, char **) override;
-  void init_style() override;
-  double init_one(int, int) override;
-  void write_data(FILE *) override;
-  void write_data_all(FILE *) override;
-  double single(int, int, int, int, double, double, double, double &) override;
-  void *extract(const char *, int &) override;
+// pair_coeff I J a gamma_C gamma_S s [cutoff]
+struct PairDPDFPMStyle {
+  static constexpr const char *name = "dpd/fpm";
+  static constexpr const char *info =
+      "ETD-DPD FPM-style DPD: central and shear drag, angular velocities and torques";
+  using Law = etd::FpmLaw;
 
-  const etd::FpmCoefficients *fpm_coefficients(int i, int j) override;
-  const etd::FpmCoefficients &coefficients(int i, int j) const { return coeffs[i * stride + j]; }
+  enum { A, GAMMA_C, GAMMA_S, S, CUTOFF };
+  static constexpr etd::CoeffParam params[] = {
+      {"a", "a", etd::CoeffArg::Required, etd::CoeffBound::Any, etd::DEFAULT_VALUE, 0.0, false,
+       nullptr, "a0"},
+      {"gamma_C", "gamma_C", etd::CoeffArg::Required, etd::CoeffBound::NonNegative,
+       etd::DEFAULT_VALUE, 0.0, false, nullptr, "gamma_c"},
+      {"gamma_S", "gamma_S", etd::CoeffArg::Required, etd::CoeffBound::NonNegative,
+       etd::DEFAULT_VALUE, 0.0, false, nullptr, "gamma_s"},
+      {"s", "dissipative exponent s", etd::CoeffArg::Required, etd::CoeffBound::Positive,
+       etd::DEFAULT_VALUE, 2.0, false, nullptr, "s"},
+      {"cutoff", "cutoff", etd::CoeffArg::Optional, etd::CoeffBound::Positive, etd::DEFAULT_CUTOFF,
+       0.0, true, nullptr, nullptr},
+  };
 
- protected:
-  // user input per type pair (upper triangle as set, mirrored in init_one); cut is the base's
-  double **a0, **gamma_c, **gamma_s, **exponent_d;
-
-  std::vector<etd::FpmCoefficients> coeffs;    // (ntypes+1)^2, filled by init_one
-  int stride;
-
-  void allocate() override;
-  void write_type_pair(FILE *, int, int) override;
-  void read_type_pair(FILE *, int, int) override;
-  template <int EVFLAG, int EXTRAS, int DISSIPATIVE> void eval();
+  static etd::FpmCoefficients coefficients(const double *v, double kT)
+  {
+    etd::FpmCoefficients c;
+    c.set(v[A], v[GAMMA_C], v[GAMMA_S], v[S], v[CUTOFF], kT);
+    return c;
+  }
 };
 
 }    // namespace LAMMPS_NS

@@ -6,6 +6,7 @@
 #include "fpm_kernel.h"
 #include "friction_operator.h"
 #include "friction_solve.h"
+#include "reference_weights.h"
 
 #include <gtest/gtest.h>
 
@@ -57,9 +58,9 @@ struct Cluster {
         etd::FrictionPair p{i,
                             j,
                             {float(d[0] / r), float(d[1] / r), float(d[2] / r)},
-                            float(gamma * etd::dissipative_weight(r, 1.0, s))};
+                            float(gamma * etdtest::dissipative_weight(r, 1.0, s))};
         pairs.push_back(p);
-        noise_amplitude.push_back(sigma * etd::random_weight(r, 1.0, s));
+        noise_amplitude.push_back(sigma * etdtest::random_weight(r, 1.0, s));
       }
   }
 

@@ -188,6 +188,26 @@ TEST(PairDpdFpm, ForceSplitAndFrictionAreConsistent)
   EXPECT_GT(dissipative, 0.1);
 }
 
+// Under fix etd scheme implicit the pair style computes only the conservative force, and
+// compute dpd/split's C columns are that force (D and R come from the scheme).
+TEST(PairDpdFpm, ForceSplitUnderTheImplicitSchemeHasTheConservativeForce)
+{
+  Lammps l;
+  setup_box(l);
+  l.cmds({"pair_style dpd/fpm 1.0 1.0 5", "pair_coeff * * 25 4.5 4.5 0.5",
+          "fix 1 all etd scheme implicit", "compute split all dpd/split",
+          "thermo_style custom step c_split[1]", "run 0 post no"});
+  const auto split = l.gather_compute("split", 9);
+  const auto f = l.gather("f");
+  double largest = 0.0;
+  for (size_t a = 0; a < f.size() / 3; a++)
+    for (int k = 0; k < 3; k++) {
+      EXPECT_NEAR(split[9 * a + k], f[3 * a + k], 1e-11 * (1 + std::fabs(f[3 * a + k])));
+      largest = std::max(largest, std::fabs(split[9 * a + k]));
+    }
+  EXPECT_GT(largest, 1.0);
+}
+
 TEST(PairDpdFpm, TorqueSplitAddsUpToTheTorque)
 {
   // compute dpd/split torque yes: the torque's dissipative and random parts (columns 10-15) add

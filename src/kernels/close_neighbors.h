@@ -4,7 +4,8 @@
 // Testing each neighbour in the pair loop costs a mispredicted branch for about every other
 // one; gathering those within the cutoff first, with the count advanced by the test's result
 // and no branch, and then doing the work on them alone made dpd/gen's force loop a third
-// cheaper (bench/README.md). Used by dpd/gen, dpd/fpm and the implicit scheme's pair build.
+// cheaper (bench/README.md). Used by the pair loop (PairDPDBase::eval) and the implicit
+// scheme's pair build.
 #ifndef ETD_CLOSE_NEIGHBORS_H
 #define ETD_CLOSE_NEIGHBORS_H
 

@@ -50,33 +50,6 @@ inline double power_of(double q, PowerKind kind, double exponent)
   }
 }
 
-// Weight (1 - r/rc)^exponent inside the cutoff, zero outside.
-inline double cutoff_weight(double r, double rc, double exponent)
-{
-  if (r >= rc) return 0.0;
-  return std::pow(1.0 - r / rc, exponent);
-}
-
-inline double conservative_weight(double r, double rc_c, double p)
-{
-  return cutoff_weight(r, rc_c, p);
-}
-inline double dissipative_weight(double r, double rc_d, double s)
-{
-  return cutoff_weight(r, rc_d, s);
-}
-inline double random_weight(double r, double rc_d, double s)
-{
-  return cutoff_weight(r, rc_d, 0.5 * s);
-}
-
-// Energy whose negative derivative is a (1 - r/rc)^p: a rc/(p+1) (1 - r/rc)^(p+1), zero at rc.
-inline double conservative_energy(double r, double a, double rc_c, double p)
-{
-  if (r >= rc_c) return 0.0;
-  return a * rc_c / (p + 1.0) * std::pow(1.0 - r / rc_c, p + 1.0);
-}
-
 // Noise amplitude from the fluctuation-dissipation theorem.
 inline double noise_amplitude(double gamma, double kT)
 {
@@ -172,16 +145,23 @@ struct PairForce {
   double total() const { return conservative + dissipative + random; }
 };
 
+// special a (1 - r/rc_C)^p inside rc_C, zero outside: the conservative force along e.
+inline double dpd_conservative(const PairCoefficients &c, double rsq, double r,
+                               double special = 1.0)
+{
+  if (rsq >= c.rcsq_c) return 0.0;
+  const double q = 1.0 - r * c.inv_rc_c;
+  return special * c.a * power_of(q, c.conservative_kind, c.p);
+}
+
 // r: distance, e_dot_v: (e . v_ij), theta: unit Gaussian, inv_sqrt_dt: 1/sqrt(dt),
-// special: special-bond factor (conservative and dissipative scale by it, random by its root).
+// special: special-bond factor (dissipative scales by it, random by its root), conservative:
+// the conservative force along e (a law other than dpd_conservative may supply its own).
 inline PairForce pair_force(const PairCoefficients &c, double rsq, double r, double e_dot_v,
-                            double theta, double inv_sqrt_dt, double special = 1.0)
+                            double theta, double inv_sqrt_dt, double special, double conservative)
 {
   PairForce out;
-  if (rsq < c.rcsq_c) {
-    const double q = 1.0 - r * c.inv_rc_c;
-    out.conservative = special * c.a * power_of(q, c.conservative_kind, c.p);
-  }
+  out.conservative = conservative;
   if (rsq < c.rcsq_d) {
     const PairDissipation d = pair_dissipation(c, r, special);
     out.friction = d.friction;
@@ -189,6 +169,13 @@ inline PairForce pair_force(const PairCoefficients &c, double rsq, double r, dou
     out.random = d.noise * theta * inv_sqrt_dt;
   }
   return out;
+}
+
+inline PairForce pair_force(const PairCoefficients &c, double rsq, double r, double e_dot_v,
+                            double theta, double inv_sqrt_dt, double special = 1.0)
+{
+  return pair_force(c, rsq, r, e_dot_v, theta, inv_sqrt_dt, special,
+                    dpd_conservative(c, rsq, r, special));
 }
 
 inline double pair_energy(const PairCoefficients &c, double rsq, double r, double special = 1.0)

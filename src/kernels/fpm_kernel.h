@@ -23,6 +23,7 @@
 #define ETD_FPM_KERNEL_H
 
 #include "dpd_kernel.h"
+#include "pair_law.h"
 
 #include <cmath>
 
@@ -122,6 +123,12 @@ inline FpmRandomForce fpm_random_force(const FpmCoefficients &c, const double e[
   return out;
 }
 
+// The central conservative force special a (1 - r/rc) along e (r inside rc): it makes no torque.
+inline double fpm_conservative(const FpmCoefficients &c, double r, double special = 1.0)
+{
+  return special * c.a * (1.0 - r * c.inv_rc);
+}
+
 // del = r_i - r_j (r = |del| > 0, inside rc), v_ij = v_i - v_j, omega_sum = Omega_i + Omega_j.
 // special: special-bond factor (conservative and dissipative scale by it, random by its root).
 inline FpmPairResult fpm_pair(const FpmCoefficients &c, const double del[3], double r,
@@ -132,7 +139,6 @@ inline FpmPairResult fpm_pair(const FpmCoefficients &c, const double del[3], dou
   if (r >= c.rc) return out;
   const double rinv = 1.0 / r;
   const double e[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
-  const double q = 1.0 - r * c.inv_rc;
   const FpmDissipation d = fpm_dissipation(c, r, special);
   out.central_friction = d.central;
   out.shear_friction = d.shear;
@@ -144,7 +150,7 @@ inline FpmPairResult fpm_pair(const FpmCoefficients &c, const double del[3], dou
   const double e_dot_v = e[0] * v_ij[0] + e[1] * v_ij[1] + e[2] * v_ij[2];
   const FpmRandomForce random = fpm_random_force(c, e, d.noise * inv_sqrt_dt, noise);
 
-  const double fc = special * c.a * q;
+  const double fc = fpm_conservative(c, r, special);
   double shear_force[3];    // the non-central part: the only one that makes a torque
   for (int k = 0; k < 3; k++) {
     const double v_perp = v_ij[k] - e_dot_v * e[k];
@@ -194,6 +200,90 @@ inline void fpm_rotational_friction(double shear_friction, double rsq, const dou
 {
   for (int k = 0; k < 3; k++) out[k] = shear_friction * 0.25 * rsq * (1.0 - e[k] * e[k]);
 }
+
+// The law of pair_style dpd/fpm for the pair loop (pair_law.h): fpm_pair, or with DISSIPATIVE
+// false only the central conservative force.
+class FpmLaw {
+ public:
+  using Coefficients = FpmCoefficients;
+  using Friction = FpmCoefficients;
+  static constexpr bool rotation = true;
+  static constexpr bool central = false;
+  static const Friction &friction(const Coefficients &c) { return c; }
+
+  double force[3];
+  double fpair;
+  double torque[3];
+
+  FpmLaw(const Coefficients &c, const PairGeometry &g) : c_(c), g_(g) {}
+
+  template <bool DISSIPATIVE> ETD_PAIR_INLINE void evaluate(const PairMotion &m, const PairStep &s)
+  {
+    dissipative_ = DISSIPATIVE;
+    if (!DISSIPATIVE) {
+      fpair = fpm_conservative(c_, g_.r, g_.special) / g_.r;
+      for (int k = 0; k < 3; k++) force[k] = g_.del[k] * fpair;
+      return;
+    }
+    double v_ij[3], omega_sum[3];
+    for (int k = 0; k < 3; k++) {
+      v_ij[k] = m.v_i[k] - m.v_j[k];
+      omega_sum[k] = m.omega_i[k] + m.omega_j[k];
+    }
+    double theta[4];
+    pair_gaussians4(s.noise, m.tag_i, m.tag_j, s.timestep, theta);
+    FpmNoise noise;
+    noise.central = theta[0];
+    for (int k = 0; k < 3; k++) noise.shear[k] = theta[k + 1];
+    pr_ = fpm_pair(c_, g_.del, g_.r, v_ij, omega_sum, noise, s.inv_sqrt_dt, g_.special);
+    for (int k = 0; k < 3; k++) {
+      force[k] = pr_.force(k);
+      torque[k] = pr_.torque[k];
+    }
+  }
+
+  ETD_PAIR_INLINE void friction_diagonal(double g[3], double g_rot[3]) const
+  {
+    const double e[3] = {g_.del[0] * g_.rinv, g_.del[1] * g_.rinv, g_.del[2] * g_.rinv};
+    fpm_translational_friction(pr_.central_friction, pr_.shear_friction, e, g);
+    fpm_rotational_friction(pr_.shear_friction, g_.rsq, e, g_rot);
+  }
+
+  // the torque's parts are the same on i and j
+  ETD_PAIR_INLINE void split(double parts[3][3], double torque_parts[2][3]) const
+  {
+    if (!dissipative_) {
+      const double fc = fpm_conservative(c_, g_.r, g_.special);
+      for (int k = 0; k < 3; k++) {
+        parts[0][k] = fc * (g_.del[k] * g_.rinv);
+        parts[1][k] = parts[2][k] = torque_parts[0][k] = torque_parts[1][k] = 0.0;
+      }
+      return;
+    }
+    for (int k = 0; k < 3; k++) {
+      parts[0][k] = pr_.conservative[k];
+      parts[1][k] = pr_.dissipative[k];
+      parts[2][k] = pr_.random[k];
+    }
+    fpm_pair_torque(g_.del, pr_.dissipative, torque_parts[0]);
+    fpm_pair_torque(g_.del, pr_.random, torque_parts[1]);
+  }
+
+  static double conservative(const Coefficients &c, double rsq, double r, double special)
+  {
+    return rsq >= c.rcsq ? 0.0 : fpm_conservative(c, r, special);
+  }
+  static double energy(const Coefficients &c, double rsq, double r, double special)
+  {
+    return rsq >= c.rcsq ? 0.0 : fpm_energy(c, r, special);
+  }
+
+ private:
+  const Coefficients &c_;
+  const PairGeometry &g_;
+  FpmPairResult pr_;
+  bool dissipative_ = false;
+};
 
 }    // namespace etd
 
