@@ -1,0 +1,126 @@
+#!/usr/bin/env bash
+# Build a KOKKOS LAMMPS (OpenMP + Serial backends, no GPU) to build the package's /kk styles
+# against, idempotently, into a cache prefix keyed by version and configuration:
+#   1. Kokkos from Debian's kokkos source package (sid by default), verified
+#        InRelease (gpgv, debian-archive-keyring) -> main/source/Sources.xz -> orig tarball
+#      and built as SHARED libraries (libkokkoscore.so, libkokkoscontainers.so, ...) into PREFIX.
+#      Debian's LAMMPS tarball is dfsg-stripped and has no lib/kokkos; and LAMMPS's bundled or
+#      downloaded Kokkos is always linked statically into liblammps, which would leave a plugin
+#      no Kokkos to share. One shared Kokkos in PREFIX/lib is the single copy that liblammps,
+#      the lmp executable and the plugin all link.
+#   2. LAMMPS (Debian's 4Jul2026 source, see tools/debian_lammps_source.sh) with the options of
+#      tools/bootstrap.sh plus PKG_KOKKOS, Kokkos_ENABLE_OPENMP/SERIAL, BUILD_OMP=on and
+#      EXTERNAL_KOKKOS=on against the Kokkos of step 1, installed into the same PREFIX.
+# Usage: tools/kokkos/build_lammps_kokkos.sh        (prints LAMMPS_KOKKOS_PREFIX=... last)
+# Environment:
+#   ETD_DPD_LAMMPS   Debian suite of the LAMMPS source (default sid)
+#   LAMMPS_SOURCE    use this LAMMPS source tree instead
+#   ETD_DPD_KOKKOS_SUITE  Debian suite of the kokkos source package (default sid)
+#   KOKKOS_SOURCE    use this Kokkos source tree (a kokkos release unpacked) instead of Debian's
+#   ETD_DPD_CACHE    cache folder (default ~/.cache/etd-dpd)
+#   ETD_DPD_JOBS     parallel build jobs (default: number of cores)
+#   ETD_DPD_DEBIAN_MIRROR  (default http://deb.debian.org/debian)
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+cache=${ETD_DPD_CACHE:-$HOME/.cache/etd-dpd}
+jobs=${ETD_DPD_JOBS:-$(nproc)}
+mirror=${ETD_DPD_DEBIAN_MIRROR:-http://deb.debian.org/debian}
+ksuite=${ETD_DPD_KOKKOS_SUITE:-sid}
+keyring=/usr/share/keyrings/debian-archive-keyring.gpg
+log() { printf '[etd-dpd] %s\n' "$*" >&2; }
+die() { printf '[etd-dpd] ERROR: %s\n' "$*" >&2; exit 1; }
+fetch() { curl -fsSL --retry 3 -o "$2" "$1" || die "could not download $1"; }
+
+# ---- Kokkos source: Debian's kokkos orig tarball, verified ------------------------------
+ksrcdir="$cache/src-$ksuite-kokkos"
+if [ -n "${KOKKOS_SOURCE:-}" ]; then
+  ksrc=$(cd "$KOKKOS_SOURCE" && pwd)
+  kver=$(sed -n 's/^set(Kokkos_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\))/\2/p' "$ksrc/CMakeLists.txt" | paste -sd.)
+  [ -n "$kver" ] || die "$ksrc is no Kokkos source tree (no Kokkos_VERSION in CMakeLists.txt)"
+elif [ ! -f "$ksrcdir/kokkos/CMakeLists.txt" ]; then
+  for tool in curl gpgv xz sha256sum tar; do command -v "$tool" >/dev/null || die "'$tool' is needed"; done
+  mkdir -p "$ksrcdir"; work=$(mktemp -d "$ksrcdir/.fetch.XXXXXX"); trap 'rm -rf "$work"' EXIT
+  fetch "$mirror/dists/$ksuite/InRelease" "$work/InRelease"
+  gpgv --keyring "$keyring" --output "$work/Release" "$work/InRelease" 2>"$work/gpgv.log" \
+    || { cat "$work/gpgv.log" >&2; die "Debian's $ksuite InRelease does not verify"; }
+  ssha=$(awk '/^SHA256:/{s=1; next} /^[^ ]/{s=0} s && $3=="main/source/Sources.xz"{print $1}' "$work/Release")
+  fetch "$mirror/dists/$ksuite/main/source/Sources.xz" "$work/Sources.xz"
+  echo "$ssha  $work/Sources.xz" | sha256sum -c --quiet - || die "Sources.xz does not match its Release SHA256"
+  xz -dc "$work/Sources.xz" | awk '
+    /^Package: / {p = ($2 == "kokkos")}
+    p && /^Version: / {print "version", $2}
+    p && /^Directory: / {print "directory", $2}
+    p && /^Checksums-Sha256:/ {c = 1; next}
+    p && c && /^ / {if ($3 ~ /\.orig\.tar\./) print "orig", $1, $3; next}
+    {c = 0}
+    /^$/ {p = 0}' >"$work/entry"
+  kver=$(awk '$1=="version"{print $2; exit}' "$work/entry")
+  kdir=$(awk '$1=="directory"{print $2; exit}' "$work/entry")
+  read -r _ ksha kname < <(awk '$1=="orig"' "$work/entry" | head -1) || true
+  [ -n "$kver" ] && [ -n "${kname:-}" ] || die "Debian's $ksuite has no kokkos source package"
+  log "Debian $ksuite: kokkos $kver ($kname)"
+  fetch "$mirror/$kdir/$kname" "$work/$kname"
+  echo "$ksha  $work/$kname" | sha256sum -c --quiet - || die "$kname does not match Debian's SHA256"
+  mkdir -p "$work/unpack"; tar -xf "$work/$kname" -C "$work/unpack"
+  top=$(find "$work/unpack" -mindepth 1 -maxdepth 1 -type d | head -1)
+  [ -f "$top/CMakeLists.txt" ] || die "$kname holds no Kokkos source tree"
+  rm -rf "$ksrcdir/kokkos"; mv "$top" "$ksrcdir/kokkos"; cp "$work/$kname" "$ksrcdir/"
+  printf '%s\n' "$kver" >"$ksrcdir/kokkos/.debian-version"
+  rm -rf "$work"; trap - EXIT
+fi
+if [ -z "${KOKKOS_SOURCE:-}" ]; then ksrc="$ksrcdir/kokkos"; kver=$(cat "$ksrc/.debian-version"); fi
+
+# ---- LAMMPS source -----------------------------------------------------------------------
+suite=${ETD_DPD_LAMMPS:-sid}
+if [ -n "${LAMMPS_SOURCE:-}" ]; then
+  src=$(cd "$LAMMPS_SOURCE" && pwd); tag="custom-$(printf '%s' "$src" | sha1sum | cut -c1-8)"
+else
+  src="$cache/src-$suite/lammps"
+  [ -f "$src/src/version.h" ] || bash "$here/tools/debian_lammps_source.sh" "$suite" "$cache/src-$suite" >/dev/null
+  tag="debian-$suite"
+fi
+version=$(sed -n 's/#define LAMMPS_VERSION "\(.*\)"/\1/p' "$src/src/version.h" | tr -d ' ')
+
+kokkos_cmake_options=(
+  -D CMAKE_BUILD_TYPE=Release -D BUILD_SHARED_LIBS=on -D CMAKE_CXX_STANDARD=20
+  -D CMAKE_CXX_EXTENSIONS=off -D Kokkos_ENABLE_OPENMP=on -D Kokkos_ENABLE_SERIAL=on
+  -D Kokkos_ENABLE_IMPL_VIEW_LEGACY=on
+)
+lammps_cmake_options=(
+  -D CMAKE_BUILD_TYPE=Release -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=on
+  -D LAMMPS_EXCEPTIONS=on -D PKG_PLUGIN=on -D PKG_DPD-BASIC=on -D PKG_MOLECULE=on
+  -D PKG_DPD-REACT=on -D PKG_EXTRA-PAIR=off
+  -D PKG_KOKKOS=on -D EXTERNAL_KOKKOS=on -D Kokkos_ENABLE_OPENMP=on -D Kokkos_ENABLE_SERIAL=on
+)
+confhash=$(printf '%s\n' "${kokkos_cmake_options[@]}" "kokkos-$kver" "${lammps_cmake_options[@]}" "$tag" \
+           | sha1sum | cut -c1-10)
+prefix="$cache/lammps-kokkos-$version-$confhash"
+common=(-D CMAKE_INSTALL_PREFIX="$prefix" -D CMAKE_INSTALL_LIBDIR=lib -D CMAKE_INSTALL_RPATH="$prefix/lib"
+        -D CMAKE_EXE_LINKER_FLAGS="-Wl,--disable-new-dtags" -D CMAKE_SHARED_LINKER_FLAGS="-Wl,--disable-new-dtags")
+step() {  # NAME LOG COMMAND...
+  local name=$1 logf=$2; shift 2
+  "$@" >"$logf" 2>&1 || { tail -40 "$logf" >&2; die "$name failed (log: $logf)"; }
+}
+if [ ! -f "$prefix/.complete" ]; then
+  log "building Kokkos $kver (shared) and LAMMPS $version ($tag) with KOKKOS into $prefix"
+  rm -rf "$prefix"; mkdir -p "$prefix"
+  t0=$(date +%s)
+  step "Kokkos configure" "$prefix/kokkos-configure.log" \
+    cmake -S "$ksrc" -B "$prefix/build-kokkos" "${kokkos_cmake_options[@]}" "${common[@]}"
+  step "Kokkos build" "$prefix/kokkos-build.log" cmake --build "$prefix/build-kokkos" -j "$jobs"
+  step "Kokkos install" "$prefix/kokkos-install.log" cmake --install "$prefix/build-kokkos"
+  t1=$(date +%s)
+  step "LAMMPS configure" "$prefix/configure.log" \
+    cmake -S "$src/cmake" -B "$prefix/build" "${lammps_cmake_options[@]}" "${common[@]}" \
+          -D Kokkos_DIR="$prefix/lib/cmake/Kokkos"
+  step "LAMMPS build" "$prefix/build.log" cmake --build "$prefix/build" -j "$jobs"
+  step "LAMMPS install" "$prefix/install.log" cmake --install "$prefix/build"
+  t2=$(date +%s)
+  printf 'kokkos %s s\nlammps %s s\njobs %s\n' $((t1 - t0)) $((t2 - t1)) "$jobs" >"$prefix/build-times"
+  printf '%s\n' "$src" >"$prefix/source-dir"
+  printf '%s\n' "$ksrc" >"$prefix/kokkos-source-dir"
+  touch "$prefix/.complete"
+else
+  log "reusing the KOKKOS LAMMPS $version at $prefix"
+fi
+echo "LAMMPS_KOKKOS_PREFIX=$prefix"

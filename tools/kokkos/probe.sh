@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Build the KOKKOS plugin probe (tools/kokkos/probe) against the KOKKOS LAMMPS of
+# build_lammps_kokkos.sh and run it: `plugin load` into lmp -k on t 2 -sf kk, 100 steps of a DPD
+# fluid with pair_style dpd/probe (-> dpd/probe/kk from the plugin), compared line by line with
+# LAMMPS's own dpd/kk (same kernels, same seed: the thermo output must be identical), then the
+# same run under valgrind (no invalid free / double free at exit).
+#   tools/kokkos/probe.sh [PREFIX]     PREFIX: the KOKKOS LAMMPS (default: build it / reuse it)
+# Environment: ETD_DPD_LAMMPS, KOKKOS_SOURCE (passed to build_lammps_kokkos.sh),
+#              ETD_DPD_PROBE_BUILD (default ./build-kokkos-probe), ETD_DPD_VALGRIND=0 to skip valgrind
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+prefix=${1:-}
+if [ -z "$prefix" ]; then
+  prefix=$("$here/build_lammps_kokkos.sh" | sed -n 's/^LAMMPS_KOKKOS_PREFIX=//p')
+fi
+[ -f "$prefix/.complete" ] || { echo "no complete KOKKOS LAMMPS at $prefix" >&2; exit 1; }
+src=$(cat "$prefix/source-dir")
+build=${ETD_DPD_PROBE_BUILD:-$(pwd)/build-kokkos-probe}
+cmake -S "$here/probe" -B "$build" -D CMAKE_BUILD_TYPE=Release -D LAMMPS_SOURCE_DIR="$src" \
+      -D LAMMPS_KOKKOS_PREFIX="$prefix" >"$build.configure.log" 2>&1 \
+  || { tail -30 "$build.configure.log" >&2; exit 1; }
+grep "probe: Kokkos" "$build.configure.log"
+cmake --build "$build" -j "$(nproc)" >"$build.build.log" 2>&1 || { tail -30 "$build.build.log" >&2; exit 1; }
+plugin="$build/dpdprobekkplugin.so"
+echo "== shared libraries of the plugin and of liblammps (one Kokkos) =="
+ldd "$plugin" | grep -i kokkos
+ldd "$prefix/lib/liblammps.so" | grep -i kokkos
+lmp="$prefix/bin/lmp"
+export OMP_PROC_BIND=spread OMP_PLACES=threads
+run() {  # NAME ARGS...: runs lmp, keeps log, stdout, stderr, exit status
+  local name=$1; shift
+  set +e
+  "$@" -log "$build/log.$name" >"$build/out.$name" 2>"$build/err.$name"
+  local rc=$?
+  set -e
+  echo "== $name: exit status $rc, stderr: $(wc -l <"$build/err.$name") lines =="
+  cat "$build/err.$name" >&2
+  return $rc
+}
+fail=0
+run plugin "$lmp" -k on t 2 -sf kk -var style dpd/probe -var plugin "$plugin" -in "$here/probe/in.dpd_probe" || fail=1
+run builtin "$lmp" -k on t 2 -sf kk -var style dpd -in "$here/probe/in.dpd_probe" || fail=1
+grep -E "Loading plugin|pair style plugin|Kokkos::OpenMP|dpd/probe" "$build/out.plugin" || true
+thermo() { awk '/^ *Step/{t=1} t&&/^Loop/{t=0} t' "$1"; }
+thermo "$build/out.plugin"
+if diff <(thermo "$build/out.plugin") <(thermo "$build/out.builtin") >/dev/null; then
+  echo "thermo output of dpd/probe/kk (plugin) and dpd/kk (liblammps): identical"
+else
+  echo "thermo output of dpd/probe/kk (plugin) and dpd/kk (liblammps): DIFFERENT"; fail=1
+  diff <(thermo "$build/out.plugin") <(thermo "$build/out.builtin") || true
+fi
+if [ "${ETD_DPD_VALGRIND:-1}" != 0 ] && command -v valgrind >/dev/null; then
+  set +e
+  valgrind --error-exitcode=1 --log-file="$build/valgrind.log" "$lmp" -k on t 2 -sf kk \
+    -var style dpd/probe -var plugin "$plugin" -in "$here/probe/in.dpd_probe" -log none \
+    >"$build/out.valgrind" 2>&1
+  vrc=$?
+  set -e
+  echo "== valgrind: exit status $vrc =="
+  grep -E "ERROR SUMMARY|Invalid free|double free|definitely lost" "$build/valgrind.log" || true
+  if grep -qE "Invalid free|double free|free\(\): invalid" "$build/valgrind.log" "$build/out.valgrind"; then
+    echo "valgrind: invalid free at exit"; fail=1
+  fi
+fi
+[ "$fail" = 0 ] && echo "PROBE PASSED" || { echo "PROBE FAILED"; exit 1; }
