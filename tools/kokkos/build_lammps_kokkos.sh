@@ -59,7 +59,10 @@ elif [ ! -f "$ksrcdir/kokkos/CMakeLists.txt" ]; then
   read -r _ ksha kname < <(awk '$1=="orig"' "$work/entry" | head -1) || true
   [ -n "$kver" ] && [ -n "${kname:-}" ] || die "Debian's $ksuite has no kokkos source package"
   log "Debian $ksuite: kokkos $kver ($kname)"
-  fetch "$mirror/$kdir/$kname" "$work/$kname"
+  curl -fsSL --retry 3 -o "$work/$kname" "$mirror/$kdir/$kname" \
+    || die "could not download $mirror/$kdir/$kname; unpack a Kokkos release that this LAMMPS
+  accepts (its cmake/Modules/Packages/KOKKOS.cmake: find_package(Kokkos VERSION ...)) and set
+  KOKKOS_SOURCE to it"
   echo "$ksha  $work/$kname" | sha256sum -c --quiet - || die "$kname does not match Debian's SHA256"
   mkdir -p "$work/unpack"; tar -xf "$work/$kname" -C "$work/unpack"
   top=$(find "$work/unpack" -mindepth 1 -maxdepth 1 -type d | head -1)

@@ -3,7 +3,7 @@
 # build_lammps_kokkos.sh and run it: `plugin load` into lmp -k on t 2 -sf kk, 100 steps of a DPD
 # fluid with pair_style dpd/probe (-> dpd/probe/kk from the plugin), compared line by line with
 # LAMMPS's own dpd/kk (same kernels, same seed: the thermo output must be identical), then the
-# same run under valgrind (no invalid free / double free at exit).
+# same run on 2 MPI ranks x 1 thread, then under valgrind (no invalid free / double free at exit).
 #   tools/kokkos/probe.sh [PREFIX]     PREFIX: the KOKKOS LAMMPS (default: build it / reuse it)
 # Environment: ETD_DPD_LAMMPS, KOKKOS_SOURCE (passed to build_lammps_kokkos.sh),
 #              ETD_DPD_PROBE_BUILD (default ./build-kokkos-probe), ETD_DPD_VALGRIND=0 to skip valgrind
@@ -16,11 +16,12 @@ fi
 [ -f "$prefix/.complete" ] || { echo "no complete KOKKOS LAMMPS at $prefix" >&2; exit 1; }
 src=$(cat "$prefix/source-dir")
 build=${ETD_DPD_PROBE_BUILD:-$(pwd)/build-kokkos-probe}
+mkdir -p "$build"
 cmake -S "$here/probe" -B "$build" -D CMAKE_BUILD_TYPE=Release -D LAMMPS_SOURCE_DIR="$src" \
-      -D LAMMPS_KOKKOS_PREFIX="$prefix" >"$build.configure.log" 2>&1 \
-  || { tail -30 "$build.configure.log" >&2; exit 1; }
-grep "probe: Kokkos" "$build.configure.log"
-cmake --build "$build" -j "$(nproc)" >"$build.build.log" 2>&1 || { tail -30 "$build.build.log" >&2; exit 1; }
+      -D LAMMPS_KOKKOS_PREFIX="$prefix" >"$build/probe-configure.log" 2>&1 \
+  || { tail -30 "$build/probe-configure.log" >&2; exit 1; }
+grep "probe: Kokkos" "$build/probe-configure.log"
+cmake --build "$build" -j "$(nproc)" >"$build/probe-build.log" 2>&1 || { tail -30 "$build/probe-build.log" >&2; exit 1; }
 plugin="$build/dpdprobekkplugin.so"
 echo "== shared libraries of the plugin and of liblammps (one Kokkos) =="
 ldd "$plugin" | grep -i kokkos
@@ -38,8 +39,13 @@ run() {  # NAME ARGS...: runs lmp, keeps log, stdout, stderr, exit status
   return $rc
 }
 fail=0
-run plugin "$lmp" -k on t 2 -sf kk -var style dpd/probe -var plugin "$plugin" -in "$here/probe/in.dpd_probe" || fail=1
+run plugin "$lmp" -k on t 2 -sf kk -var style dpd/probe -var load 1 -var plugin "$plugin" -in "$here/probe/in.dpd_probe" || fail=1
 run builtin "$lmp" -k on t 2 -sf kk -var style dpd -in "$here/probe/in.dpd_probe" || fail=1
+if command -v mpirun >/dev/null; then
+  mpiflags=(); [ "$(id -u)" = 0 ] && mpiflags+=(--allow-run-as-root)
+  run plugin-2ranks mpirun "${mpiflags[@]}" --oversubscribe -np 2 "$lmp" -k on t 1 -sf kk \
+    -var style dpd/probe -var load 1 -var plugin "$plugin" -in "$here/probe/in.dpd_probe" || fail=1
+fi
 grep -E "Loading plugin|pair style plugin|Kokkos::OpenMP|dpd/probe" "$build/out.plugin" || true
 thermo() { awk '/^ *Step/{t=1} t&&/^Loop/{t=0} t' "$1"; }
 thermo "$build/out.plugin"
@@ -52,7 +58,7 @@ fi
 if [ "${ETD_DPD_VALGRIND:-1}" != 0 ] && command -v valgrind >/dev/null; then
   set +e
   valgrind --error-exitcode=1 --log-file="$build/valgrind.log" "$lmp" -k on t 2 -sf kk \
-    -var style dpd/probe -var plugin "$plugin" -in "$here/probe/in.dpd_probe" -log none \
+    -var style dpd/probe -var load 1 -var plugin "$plugin" -in "$here/probe/in.dpd_probe" -log none \
     >"$build/out.valgrind" 2>&1
   vrc=$?
   set -e

@@ -28,6 +28,7 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.creator.v1 = (lammpsplugin_factory1 *) &probe_device;
   (*register_plugin)(&plugin, lmp);
   plugin.name = "dpd/probe/kk/host";
+  plugin.info = "dpd/probe/kk/host: dpd/kk kernels compiled in a plugin, host execution space";
   plugin.creator.v1 = (lammpsplugin_factory1 *) &probe_host;
   (*register_plugin)(&plugin, lmp);
 }
