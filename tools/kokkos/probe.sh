@@ -68,4 +68,25 @@ if [ "${ETD_DPD_VALGRIND:-1}" != 0 ] && command -v valgrind >/dev/null; then
     echo "valgrind: invalid free at exit"; fail=1
   fi
 fi
+# the negative control (ETD_DPD_PROBE_STATIC_CONTROL=1): the same plugin with its own static
+# Kokkos linked in; valgrind is expected to report an invalid free at exit (the double free of
+# LAMMPS issue 3469: Kokkos' global objects destroyed once per copy)
+if [ "${ETD_DPD_PROBE_STATIC_CONTROL:-0}" = 1 ]; then
+  ksrc=$(cat "$prefix/kokkos-source-dir"); ks="$build/kokkos-static"
+  cmake -S "$ksrc" -B "$ks/build" -D CMAKE_BUILD_TYPE=Release -D BUILD_SHARED_LIBS=off \
+        -D CMAKE_POSITION_INDEPENDENT_CODE=on -D CMAKE_CXX_STANDARD=20 -D CMAKE_CXX_EXTENSIONS=off \
+        -D Kokkos_ENABLE_OPENMP=on -D Kokkos_ENABLE_SERIAL=on -D Kokkos_ENABLE_IMPL_VIEW_LEGACY=on \
+        -D CMAKE_INSTALL_PREFIX="$ks" -D CMAKE_INSTALL_LIBDIR=lib >"$ks.log" 2>&1
+  cmake --build "$ks/build" -j "$(nproc)" >>"$ks.log" 2>&1 && cmake --install "$ks/build" >>"$ks.log" 2>&1
+  mpicxx -std=c++20 -O2 -fPIC -fopenmp -shared -DLMP_KOKKOS -DLAMMPS_SMALLBIG -I"$src/src" \
+    -I"$src/src/KOKKOS" -I"$src/src/DPD-BASIC" -I"$ks/include" "$here/probe/dpd_probe_kk.cpp" \
+    -o "$build/static-kokkos-probe.so" "$ks/lib/libkokkoscontainers.a" "$ks/lib/libkokkoscore.a" -ldl
+  set +e
+  valgrind --error-exitcode=1 --log-file="$build/valgrind-static.log" "$lmp" -k on t 2 -sf kk \
+    -var style dpd/probe -var load 1 -var plugin "$build/static-kokkos-probe.so" \
+    -in "$here/probe/in.dpd_probe" -log none >/dev/null 2>&1
+  echo "== control, static Kokkos in the plugin: valgrind exit status $? =="
+  set -e
+  grep -E -A3 "Invalid free|ERROR SUMMARY" "$build/valgrind-static.log" | head -8 || true
+fi
 [ "$fail" = 0 ] && echo "PROBE PASSED" || { echo "PROBE FAILED"; exit 1; }
