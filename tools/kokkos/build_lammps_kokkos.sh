@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Build a KOKKOS LAMMPS (OpenMP + Serial backends, no GPU) to build the package's /kk styles
 # against, idempotently, into a cache prefix keyed by version and configuration:
-#   1. Kokkos from Debian's kokkos source package (sid by default), verified
+#   1. Kokkos from Debian's kokkos source package (sid by default), fetched and verified by
+#      tools/debian_lammps_source.sh:
 #        InRelease (gpgv, debian-archive-keyring) -> main/source/Sources.xz -> orig tarball
 #      and built as SHARED libraries (libkokkoscore.so, libkokkoscontainers.so, ...) into PREFIX.
 #      Debian's LAMMPS tarball is dfsg-stripped and has no lib/kokkos; and LAMMPS's bundled or
@@ -26,10 +27,8 @@ cache=${ETD_DPD_CACHE:-$HOME/.cache/etd-dpd}
 jobs=${ETD_DPD_JOBS:-$(nproc)}
 mirror=${ETD_DPD_DEBIAN_MIRROR:-http://deb.debian.org/debian}
 ksuite=${ETD_DPD_KOKKOS_SUITE:-sid}
-keyring=/usr/share/keyrings/debian-archive-keyring.gpg
 log() { printf '[etd-dpd] %s\n' "$*" >&2; }
 die() { printf '[etd-dpd] ERROR: %s\n' "$*" >&2; exit 1; }
-fetch() { curl -fsSL --retry 3 -o "$2" "$1" || die "could not download $1"; }
 
 # ---- Kokkos source: Debian's kokkos orig tarball, verified ------------------------------
 ksrcdir="$cache/src-$ksuite-kokkos"
@@ -38,38 +37,11 @@ if [ -n "${KOKKOS_SOURCE:-}" ]; then
   kver=$(sed -n 's/^set(Kokkos_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\))/\2/p' "$ksrc/CMakeLists.txt" | paste -sd.)
   [ -n "$kver" ] || die "$ksrc is no Kokkos source tree (no Kokkos_VERSION in CMakeLists.txt)"
 elif [ ! -f "$ksrcdir/kokkos/CMakeLists.txt" ]; then
-  for tool in curl gpgv xz sha256sum tar; do command -v "$tool" >/dev/null || die "'$tool' is needed"; done
-  mkdir -p "$ksrcdir"; work=$(mktemp -d "$ksrcdir/.fetch.XXXXXX"); trap 'rm -rf "$work"' EXIT
-  fetch "$mirror/dists/$ksuite/InRelease" "$work/InRelease"
-  gpgv --keyring "$keyring" --output "$work/Release" "$work/InRelease" 2>"$work/gpgv.log" \
-    || { cat "$work/gpgv.log" >&2; die "Debian's $ksuite InRelease does not verify"; }
-  ssha=$(awk '/^SHA256:/{s=1; next} /^[^ ]/{s=0} s && $3=="main/source/Sources.xz"{print $1}' "$work/Release")
-  fetch "$mirror/dists/$ksuite/main/source/Sources.xz" "$work/Sources.xz"
-  echo "$ssha  $work/Sources.xz" | sha256sum -c --quiet - || die "Sources.xz does not match its Release SHA256"
-  xz -dc "$work/Sources.xz" | awk '
-    /^Package: / {p = ($2 == "kokkos")}
-    p && /^Version: / {print "version", $2}
-    p && /^Directory: / {print "directory", $2}
-    p && /^Checksums-Sha256:/ {c = 1; next}
-    p && c && /^ / {if ($3 ~ /\.orig\.tar\./) print "orig", $1, $3; next}
-    {c = 0}
-    /^$/ {p = 0}' >"$work/entry"
-  kver=$(awk '$1=="version"{print $2; exit}' "$work/entry")
-  kdir=$(awk '$1=="directory"{print $2; exit}' "$work/entry")
-  read -r _ ksha kname < <(awk '$1=="orig"' "$work/entry" | head -1) || true
-  [ -n "$kver" ] && [ -n "${kname:-}" ] || die "Debian's $ksuite has no kokkos source package"
-  log "Debian $ksuite: kokkos $kver ($kname)"
-  curl -fsSL --retry 3 -o "$work/$kname" "$mirror/$kdir/$kname" \
-    || die "could not download $mirror/$kdir/$kname; unpack a Kokkos release that this LAMMPS
-  accepts (its cmake/Modules/Packages/KOKKOS.cmake: find_package(Kokkos VERSION ...)) and set
-  KOKKOS_SOURCE to it"
-  echo "$ksha  $work/$kname" | sha256sum -c --quiet - || die "$kname does not match Debian's SHA256"
-  mkdir -p "$work/unpack"; tar -xf "$work/$kname" -C "$work/unpack"
-  top=$(find "$work/unpack" -mindepth 1 -maxdepth 1 -type d | head -1)
-  [ -f "$top/CMakeLists.txt" ] || die "$kname holds no Kokkos source tree"
-  rm -rf "$ksrcdir/kokkos"; mv "$top" "$ksrcdir/kokkos"; cp "$work/$kname" "$ksrcdir/"
-  printf '%s\n' "$kver" >"$ksrcdir/kokkos/.debian-version"
-  rm -rf "$work"; trap - EXIT
+  ETD_DPD_DEBIAN_MIRROR=$mirror bash "$here/tools/debian_lammps_source.sh" "$ksuite" "$ksrcdir" \
+    kokkos >/dev/null \
+    || die "no Kokkos source from Debian's $ksuite (above); unpack a Kokkos release that this
+  LAMMPS accepts (its cmake/Modules/Packages/KOKKOS.cmake: find_package(Kokkos VERSION ...)) and
+  set KOKKOS_SOURCE to it"
 fi
 if [ -z "${KOKKOS_SOURCE:-}" ]; then ksrc="$ksrcdir/kokkos"; kver=$(cat "$ksrc/.debian-version"); fi
 
