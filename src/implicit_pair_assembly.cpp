@@ -3,6 +3,7 @@
 
 #include "close_neighbors.h"
 #include "implicit_partners.h"
+#include "pair_law.h"
 
 #include "atom.h"
 #include "domain.h"
@@ -82,6 +83,30 @@ void FrictionPairAssembly::clear(bool moving_images, int nlocal)
   pair_offset_.clear();
   fpm_offset_.clear();
   image_friction_.assign(moving_images ? dofs_ * nlocal : 0, 0.0);
+}
+
+// inlined into build()'s pair loop: a call per pair there would keep the processor from
+// overlapping the square roots of successive pairs
+ETD_PAIR_INLINE void FrictionPairAssembly::add_dpd_pair(const PairCoefficients &c, int i,
+                                                        int partner, const double d[3], double rsq,
+                                                        double factor,
+                                                        std::pair<tagint, tagint> tags)
+{
+  const double r = std::sqrt(rsq);
+  const double inv_r = 1.0 / r;
+  const PairDissipation dissipation = pair_dissipation(c, r, factor);
+  // written in place (a pair assembled on the stack and copied stalled on the copy)
+  pairs_.emplace_back();
+  FrictionPair &p = pairs_.back();
+  p.i = i;
+  p.j = partner;
+  for (int k = 0; k < 3; k++) p.e[k] = static_cast<float>(d[k] * inv_r);
+  p.friction = static_cast<float>(dissipation.friction);
+  // the amplitude now, the Gaussian in a second pass: without the generator in it the pair
+  // loop is short enough for the processor to overlap the square roots of successive pairs
+  pair_noise_.push_back(dissipation.noise);
+  pair_tags_.push_back(tags);
+  pair_distance_.push_back(r);
 }
 
 bool FrictionPairAssembly::build(LAMMPS *lmp, const Context &context)
@@ -164,27 +189,6 @@ bool FrictionPairAssembly::build(LAMMPS *lmp, const Context &context)
     pair_noise_[n] *= noise_.gaussian(pair_tags_[n].first, pair_tags_[n].second, context.step);
   find_runs(pairs_, pair_runs_);
   return fixed_partner;
-}
-
-void FrictionPairAssembly::add_dpd_pair(const PairCoefficients &c, int i, int partner,
-                                        const double d[3], double rsq, double factor,
-                                        std::pair<tagint, tagint> tags)
-{
-  const double r = std::sqrt(rsq);
-  const double inv_r = 1.0 / r;
-  const PairDissipation dissipation = pair_dissipation(c, r, factor);
-  // written in place (a pair assembled on the stack and copied stalled on the copy)
-  pairs_.emplace_back();
-  FrictionPair &p = pairs_.back();
-  p.i = i;
-  p.j = partner;
-  for (int k = 0; k < 3; k++) p.e[k] = static_cast<float>(d[k] * inv_r);
-  p.friction = static_cast<float>(dissipation.friction);
-  // the amplitude now, the Gaussian in a second pass: without the generator in it the pair
-  // loop is short enough for the processor to overlap the square roots of successive pairs
-  pair_noise_.push_back(dissipation.noise);
-  pair_tags_.push_back(tags);
-  pair_distance_.push_back(r);
 }
 
 // One dpd/fpm pair (friction_operator.h): its geometry and its random force on i (without the
