@@ -281,6 +281,7 @@ void FixETDImplicit::drift(double fraction)
 void FixETDImplicit::initial_integrate(int)
 {
   virial_this_step = virial_wanted();
+  dof_inertia(work.inertia);    // the solves and the friction step's right-hand side
   if (options.overdamped) {
     overdamped_step();
     return;

@@ -68,8 +68,8 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
 
   // work vectors reused from step to step (per-step allocation costs page faults at scale)
   struct Work {
-    std::vector<double> masses;    // solve(): per unknown, mass or moment of inertia
-    std::vector<double> u, gu_rhs, step_rhs, impulse, solution, inertia, predicted;    // the steps
+    std::vector<double> inertia;    // per unknown, mass or moment of inertia (once per step)
+    std::vector<double> u, gu_rhs, step_rhs, impulse, solution, predicted;    // the steps
     std::vector<double> ghost_u;        // per ghost: velocities
     std::vector<double> mean, gmean;    // the split and the virial
     std::vector<double> lead;    // post_integrate(): how far the next friction step moves each atom

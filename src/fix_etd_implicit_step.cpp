@@ -21,12 +21,11 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
                            const std::vector<double> *start_friction)
 {
   const int *mask = atom->mask;
-  dof_inertia(work.masses);
   assembly.accumulate_blocks(diagonal, 2 * dofs, atom->nlocal);    // the preconditioner's
 
   etd::FrictionSystem system;
   system.n = dofs * atom->nlocal;
-  system.inertia = work.masses.data();
+  system.inertia = work.inertia.data();    // this step's (initial_integrate)
   system.blocks = diagonal.data();
   system.mass_weight = mass_weight;
   system.friction_weight = friction_weight;
@@ -84,8 +83,7 @@ void FixETDImplicit::friction_step_rhs()
   // the fixed atoms' velocities appear twice, once from the old and once from the new side of
   // the Pade update
   std::vector<double> &u = work.u, &gu = work.gu_rhs, &rhs = work.step_rhs, &impulse = work.impulse;
-  std::vector<double> &inertia = work.inertia;
-  dof_inertia(inertia);
+  const std::vector<double> &inertia = work.inertia;
   // One forward exchange brings the ghosts to the half-drifted positions and carries their
   // velocities (every exchange is a point where the ranks wait for each other)
   const int nall = nlocal + atom->nghost;
