@@ -113,6 +113,8 @@ class PairDPDBase : public Pair, public etd::DpdPairInterface {
   // compute() for a style with law Law; table: its coefficients, row-major (ntypes+1)^2
   template <class Law>
   void compute_pairs(const typename Law::Coefficients *table, int stride, int eflag, int vflag);
+  template <class Law, int EVFLAG>
+  void eval_with_extras(const typename Law::Coefficients *table, int stride);
   template <class Law, int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE>
   void eval(const typename Law::Coefficients *table, int stride);
   template <class Law, int DISSIPATIVE>
@@ -136,37 +138,30 @@ void PairDPDBase::compute_pairs(const typename Law::Coefficients *table, int str
   ev_init(eflag, vflag);
   const bool extras = prepare_extras();
 
-  // the extras are template flags so that the plain force loop carries none of their work
-  if (conservative_only) {
-    if (evflag) {
-      if (want_split)
-        eval<Law, 1, 0, 1, 0>(table, stride);
-      else
-        eval<Law, 1, 0, 0, 0>(table, stride);
-    } else {
-      if (want_split)
-        eval<Law, 0, 0, 1, 0>(table, stride);
-      else
-        eval<Law, 0, 0, 0, 0>(table, stride);
-    }
-  } else if (evflag) {
-    if (want_split)
-      eval<Law, 1, 1, 1, 1>(table, stride);
-    else if (want_friction)
-      eval<Law, 1, 1, 0, 1>(table, stride);
-    else
-      eval<Law, 1, 0, 0, 1>(table, stride);
-  } else {
-    if (want_split)
-      eval<Law, 0, 1, 1, 1>(table, stride);
-    else if (want_friction)
-      eval<Law, 0, 1, 0, 1>(table, stride);
-    else
-      eval<Law, 0, 0, 0, 1>(table, stride);
-  }
-
+  if (evflag)
+    eval_with_extras<Law, 1>(table, stride);
+  else
+    eval_with_extras<Law, 0>(table, stride);
   finish_extras(extras);
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+// The extras are template flags so that the plain force loop carries none of their work.
+template <class Law, int EVFLAG>
+void PairDPDBase::eval_with_extras(const typename Law::Coefficients *table, int stride)
+{
+  if (conservative_only) {
+    if (want_split)
+      eval<Law, EVFLAG, 0, 1, 0>(table, stride);
+    else
+      eval<Law, EVFLAG, 0, 0, 0>(table, stride);
+  } else if (want_split) {
+    eval<Law, EVFLAG, 1, 1, 1>(table, stride);
+  } else if (want_friction) {
+    eval<Law, EVFLAG, 1, 0, 1>(table, stride);
+  } else {
+    eval<Law, EVFLAG, 0, 0, 1>(table, stride);
+  }
 }
 
 // DISSIPATIVE = 0: only the law's conservative force, which is central and makes no torque:
