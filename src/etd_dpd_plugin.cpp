@@ -11,6 +11,9 @@
 #include "pair_dpd_fpm.h"
 #include "pair_dpd_gen.h"
 #include "version.h"
+#ifdef ETD_DPD_KOKKOS
+#include "KOKKOS/pair_dpd_law_kokkos.h"
+#endif
 
 #include <string>
 
@@ -62,6 +65,9 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 
   register_pair_style<PairDPDGenStyle>(plugin, register_plugin, lmp);
   register_pair_style<PairDPDFPMStyle>(plugin, register_plugin, lmp);
+#ifdef ETD_DPD_KOKKOS
+  register_pair_style_kokkos<PairDPDGenStyle>(plugin, register_plugin, lmp);
+#endif
 
   plugin.style = "compute";
   plugin.name = "dpd/split";

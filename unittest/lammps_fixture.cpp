@@ -16,11 +16,14 @@
 
 namespace etdtest {
 
-Lammps::Lammps(MPI_Comm comm_, bool load_plugin) : comm(comm_)
+Lammps::Lammps(MPI_Comm comm_, bool load_plugin, const std::vector<std::string> &args) :
+    comm(comm_)
 {
-  const char *args[] = {"etd_test", "-log", "none", "-screen", "none", "-nocite"};
-  char **argv = const_cast<char **>(args);
-  lmp = new LAMMPS_NS::LAMMPS(6, argv, comm);
+  std::vector<std::string> words = {"etd_test", "-log", "none", "-screen", "none", "-nocite"};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char *> argv;
+  for (std::string &word : words) argv.push_back(word.data());
+  lmp = new LAMMPS_NS::LAMMPS(static_cast<int>(argv.size()), argv.data(), comm);
   if (load_plugin) cmd(std::string("plugin load ") + ETD_PLUGIN_PATH);
 }
 
@@ -211,10 +214,11 @@ std::vector<double> on_ranks(int ranks, const std::function<std::vector<double>(
   return result;
 }
 
-void expect_errors(const std::vector<BadInput> &cases, const std::function<void(Lammps &)> &setup)
+void expect_errors(const std::vector<BadInput> &cases, const std::function<void(Lammps &)> &setup,
+                   const std::vector<std::string> &args)
 {
   for (const BadInput &c : cases) {
-    Lammps l;
+    Lammps l(MPI_COMM_WORLD, true, args);
     setup(l);
     const std::string message = l.error_of(c.commands);
     EXPECT_FALSE(message.empty()) << "commands ending '" << c.commands.back() << "' gave no ERROR";

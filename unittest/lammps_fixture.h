@@ -16,8 +16,10 @@ namespace etdtest {
 
 class Lammps {
  public:
-  // comm: the ranks this instance runs on (MPI_COMM_WORLD by default)
-  explicit Lammps(MPI_Comm comm = MPI_COMM_WORLD, bool load_plugin = true);
+  // comm: the ranks this instance runs on (MPI_COMM_WORLD by default); args: further
+  // command-line arguments (for example -k on t 2 -sf kk)
+  explicit Lammps(MPI_Comm comm = MPI_COMM_WORLD, bool load_plugin = true,
+                  const std::vector<std::string> &args = {});
   ~Lammps();
   Lammps(const Lammps &) = delete;
   Lammps &operator=(const Lammps &) = delete;
@@ -49,8 +51,9 @@ struct BadInput {
   std::string expected;
 };
 // Runs every case in a fresh instance prepared by setup and checks that it stops with an ERROR
-// that contains the expected text.
-void expect_errors(const std::vector<BadInput> &cases, const std::function<void(Lammps &)> &setup);
+// that contains the expected text; args: the instances' further command-line arguments.
+void expect_errors(const std::vector<BadInput> &cases, const std::function<void(Lammps &)> &setup,
+                   const std::vector<std::string> &args = {});
 
 // A data file with n atoms at random positions in a cube of side L (deterministic).
 void write_random_data(const std::string &path, int natoms, double L, unsigned seed, int ntypes = 1,

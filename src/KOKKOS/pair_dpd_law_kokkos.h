@@ -1,0 +1,133 @@
+// ETD-DPD: the KOKKOS variant of a central pair style of the package (pair_style dpd/gen/kk).
+//
+// The pair loop runs as a Kokkos kernel over LAMMPS's Kokkos half neighbor list, with the same
+// law (pair_law.h) and the same counter-based noise keyed on atom IDs as the CPU style, so its
+// forces equal the CPU style's to round-off (summation order) and its trajectories follow them.
+// Coefficients, pair_coeff, restart and write_data are the CPU style's (the class derives from
+// it, as LAMMPS's dpd/kk derives from dpd).
+//
+// When fix etd or compute dpd/split asks the style for its per-atom extras (diagonal friction,
+// force split, conservative force only, a newton-off list), the style runs the CPU loop on the
+// host for that run: it asks LAMMPS for a host neighbor list and reads and writes the host
+// copies of the atom arrays, which LAMMPS's KOKKOS package syncs around it. Those fixes and
+// computes run on the host in any case.
+//
+// The noise is drawn with Boost.Random's ziggurat, which runs on the host only: the style is
+// available on host execution spaces (Serial, OpenMP, Threads). In a LAMMPS built for a GPU the
+// device variant stops with an ERROR that says so.
+#ifndef ETD_PAIR_DPD_LAW_KOKKOS_H
+#define ETD_PAIR_DPD_LAW_KOKKOS_H
+
+#include "pair_dpd_style.h"
+
+#include "kokkos_type.h"
+#include "pair_kokkos.h"
+
+#include <type_traits>
+
+namespace LAMMPS_NS {
+
+template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPDStyle<Style> {
+ public:
+  using Base = PairDPDStyle<Style>;
+  using Law = typename Style::Law;
+  using Coefficients = typename Law::Coefficients;
+  using device_type = DeviceType;
+  using AT = ArrayTypes<DeviceType>;
+  using value_type = EV_FLOAT;
+  static_assert(Law::central && !Law::rotation,
+                "the Kokkos pair loop is written for central laws without rotation");
+  static constexpr bool device_is_host = std::is_same_v<
+      typename DeviceType::execution_space::memory_space, Kokkos::HostSpace>;
+
+  explicit PairDPDLawKokkos(class LAMMPS *);
+  ~PairDPDLawKokkos() override;
+
+  void init_style() override;
+  double init_one(int i, int j) override;
+  void compute(int eflag, int vflag) override;
+
+  // what the package's fixes and computes ask of the style: served by the host loop
+  void request_diagonal_friction() override;
+  void request_force_split() override;
+  void request_conservative_only() override;
+  void request_newton_off_list() override;
+
+  template <int NEIGHFLAG, int EVFLAG> struct TagPairLaw {};
+  template <int NEIGHFLAG, int EVFLAG>
+  KOKKOS_INLINE_FUNCTION void operator()(TagPairLaw<NEIGHFLAG, EVFLAG>, const int &ii) const;
+  template <int NEIGHFLAG, int EVFLAG>
+  KOKKOS_INLINE_FUNCTION void operator()(TagPairLaw<NEIGHFLAG, EVFLAG>, const int &ii,
+                                         EV_FLOAT &ev) const;
+
+  // created as the device variant in a LAMMPS whose device is not the host: init stops
+  bool refuse_device = false;
+
+  // the views LAMMPS's f dot r virial reads
+  typename AT::t_x_array_randomread x;
+  typename AT::t_f_array f;
+
+ protected:
+  void allocate() override;
+
+ private:
+  bool host_loop;    // this run is served by the CPU loop (see the header)
+  int neighflag, nlocal;
+  int eflag_global_kk, eflag_atom_kk, vflag_global_kk, vflag_atom_kk, vflag_either_kk;
+  double special_lj_kk[4];
+  bigint timestep_kk;
+  double inv_sqrt_dt;
+  int need_dup;
+
+  void use_host_loop();
+  void compute_on_device(int eflag, int vflag);
+  template <int NEIGHFLAG> void launch(int inum, EV_FLOAT &ev);
+
+  template <int NEIGHFLAG>
+  KOKKOS_INLINE_FUNCTION void ev_tally(EV_FLOAT &ev, int i, int j, double epair, double fpair,
+                                       double delx, double dely, double delz) const;
+
+  using KKDeviceType = typename KKDevice<DeviceType>::value;
+  template <typename DataType, typename Layout>
+  using DupScatterView =
+      KKScatterView<DataType, Layout, KKDeviceType, KKScatterSum, KKScatterDuplicated>;
+  template <typename DataType, typename Layout>
+  using NonDupScatterView =
+      KKScatterView<DataType, Layout, KKDeviceType, KKScatterSum, KKScatterNonDuplicated>;
+
+  DupScatterView<F_FLOAT *[3], typename DAT::t_f_array::array_layout> dup_f;
+  DupScatterView<E_FLOAT *, typename DAT::t_efloat_1d::array_layout> dup_eatom;
+  DupScatterView<F_FLOAT *[6], typename DAT::t_virial_array::array_layout> dup_vatom;
+  NonDupScatterView<F_FLOAT *[3], typename DAT::t_f_array::array_layout> ndup_f;
+  NonDupScatterView<E_FLOAT *, typename DAT::t_efloat_1d::array_layout> ndup_eatom;
+  NonDupScatterView<F_FLOAT *[6], typename DAT::t_virial_array::array_layout> ndup_vatom;
+
+  typename AT::t_x_array_randomread v;
+  typename AT::t_int_1d_randomread type;
+  typename AT::t_tagint_1d_randomread tag;
+  typename AT::t_neighbors_2d d_neighbors;
+  typename AT::t_int_1d_randomread d_ilist;
+  typename AT::t_int_1d_randomread d_numneigh;
+
+  typename AT::tdual_ffloat_2d k_cutsq;
+  typename AT::t_ffloat_2d d_cutsq;
+  Kokkos::DualView<Coefficients **, Kokkos::LayoutRight, DeviceType> k_params;
+  typename Kokkos::DualView<Coefficients **, Kokkos::LayoutRight, DeviceType>::t_dev_const_um
+      params;
+
+  DAT::tdual_efloat_1d k_eatom;
+  DAT::tdual_virial_array k_vatom;
+  typename AT::t_efloat_1d d_eatom;
+  typename AT::t_virial_array d_vatom;
+
+  friend void pair_virial_fdotr_compute<PairDPDLawKokkos>(PairDPDLawKokkos *);
+};
+
+// Registers Style's /kk, /kk/device and /kk/host variants with LAMMPS.
+template <class Style>
+void register_pair_style_kokkos(lammpsplugin_t plugin, lammpsplugin_regfunc register_plugin,
+                                void *lmp);
+
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,374 @@
+// ETD-DPD: the definitions of PairDPDLawKokkos (pair_dpd_law_kokkos.h), included by the one
+// source file that instantiates them for the package's styles.
+#ifndef ETD_PAIR_DPD_LAW_KOKKOS_IMPL_H
+#define ETD_PAIR_DPD_LAW_KOKKOS_IMPL_H
+
+#include "pair_dpd_law_kokkos.h"
+
+#include "atom_kokkos.h"
+#include "atom_masks.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "kokkos.h"
+#include "memory_kokkos.h"
+#include "neigh_list_kokkos.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <cmath>
+
+namespace LAMMPS_NS {
+
+template <class DeviceType, class Style>
+PairDPDLawKokkos<DeviceType, Style>::PairDPDLawKokkos(LAMMPS *lmp) :
+    Base(lmp), host_loop(false), neighflag(0), nlocal(0), eflag_global_kk(0), eflag_atom_kk(0),
+    vflag_global_kk(0), vflag_atom_kk(0), vflag_either_kk(0), special_lj_kk{1.0, 1.0, 1.0, 1.0},
+    timestep_kk(0), inv_sqrt_dt(0.0), need_dup(0)
+{
+  this->kokkosable = 1;
+  this->atomKK = (AtomKokkos *) this->atom;
+  this->execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
+  this->datamask_read = EMPTY_MASK;
+  this->datamask_modify = EMPTY_MASK;
+}
+
+template <class DeviceType, class Style> PairDPDLawKokkos<DeviceType, Style>::~PairDPDLawKokkos()
+{
+  if (this->copymode) return;
+  this->memoryKK->destroy_kokkos(k_eatom, this->eatom);
+  this->memoryKK->destroy_kokkos(k_vatom, this->vatom);
+  // cutsq's rows live in k_cutsq: it is released here, before the base class would free them
+  this->memoryKK->destroy_kokkos(k_cutsq, this->cutsq);
+}
+
+template <class DeviceType, class Style> void PairDPDLawKokkos<DeviceType, Style>::allocate()
+{
+  Base::allocate();
+  const int n = this->atom->ntypes;
+  this->memory->destroy(this->cutsq);
+  this->memoryKK->create_kokkos(k_cutsq, this->cutsq, n + 1, n + 1, "pair:cutsq");
+  d_cutsq = k_cutsq.template view<DeviceType>();
+  k_params = Kokkos::DualView<Coefficients **, Kokkos::LayoutRight, DeviceType>(
+      "PairDPDLawKokkos::params", n + 1, n + 1);
+  params = k_params.template view<DeviceType>();
+}
+
+template <class DeviceType, class Style> void PairDPDLawKokkos<DeviceType, Style>::init_style()
+{
+  if (refuse_device)
+    this->error->all(FLERR,
+                     "Pair style {}/kk has no device kernel: its counter-based Gaussian noise "
+                     "(Boost.Random's ziggurat) runs on the host only; use {}/kk/host, or run "
+                     "without -sf kk",
+                     Style::name, Style::name);
+  Base::init_style();
+  host_loop = false;
+  neighflag = this->lmp->kokkos->neighflag;
+  if (neighflag == FULL || this->force->newton_pair == 0)
+    this->error->all(FLERR,
+                     "Pair style {}/kk requires a half neighbor list and newton on "
+                     "(-pk kokkos neigh half newton on)",
+                     Style::name);
+  this->neigh_request->set_kokkos_host(std::is_same_v<DeviceType, LMPHostType> &&
+                                       !std::is_same_v<DeviceType, LMPDeviceType>);
+  this->neigh_request->set_kokkos_device(std::is_same_v<DeviceType, LMPDeviceType>);
+  this->execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
+  this->datamask_read = EMPTY_MASK;
+  this->datamask_modify = EMPTY_MASK;
+}
+
+// A host neighbor list and host arrays for this run: LAMMPS syncs all of an atom's data to the
+// host before the style computes (datamask ALL) and marks it modified there after.
+template <class DeviceType, class Style> void PairDPDLawKokkos<DeviceType, Style>::use_host_loop()
+{
+  if (host_loop) return;
+  host_loop = true;
+  this->neigh_request->set_kokkos_host(0);
+  this->neigh_request->set_kokkos_device(0);
+  this->execution_space = Host;
+  this->datamask_read = ALL_MASK;
+  this->datamask_modify = ALL_MASK;
+}
+
+template <class DeviceType, class Style>
+void PairDPDLawKokkos<DeviceType, Style>::request_diagonal_friction()
+{
+  use_host_loop();
+  Base::request_diagonal_friction();
+}
+template <class DeviceType, class Style>
+void PairDPDLawKokkos<DeviceType, Style>::request_force_split()
+{
+  use_host_loop();
+  Base::request_force_split();
+}
+template <class DeviceType, class Style>
+void PairDPDLawKokkos<DeviceType, Style>::request_conservative_only()
+{
+  use_host_loop();
+  Base::request_conservative_only();
+}
+template <class DeviceType, class Style>
+void PairDPDLawKokkos<DeviceType, Style>::request_newton_off_list()
+{
+  use_host_loop();
+  Base::request_newton_off_list();
+}
+
+template <class DeviceType, class Style>
+double PairDPDLawKokkos<DeviceType, Style>::init_one(int i, int j)
+{
+  const double range = Base::init_one(i, j);
+  k_params.h_view(i, j) = this->table[i * this->stride + j];
+  k_params.h_view(j, i) = this->table[j * this->stride + i];
+  k_params.template modify<LMPHostType>();
+  k_cutsq.h_view(i, j) = k_cutsq.h_view(j, i) = range * range;
+  k_cutsq.template modify<LMPHostType>();
+  return range;
+}
+
+template <class DeviceType, class Style>
+void PairDPDLawKokkos<DeviceType, Style>::compute(int eflag, int vflag)
+{
+  if (host_loop)
+    Base::compute(eflag, vflag);
+  else
+    compute_on_device(eflag, vflag);
+}
+
+template <class DeviceType, class Style>
+void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag)
+{
+  this->ev_init(eflag, vflag, 0);
+  if (this->eflag_atom) {
+    this->memoryKK->destroy_kokkos(k_eatom, this->eatom);
+    this->memoryKK->create_kokkos(k_eatom, this->eatom, this->maxeatom, "pair:eatom");
+    d_eatom = k_eatom.template view<DeviceType>();
+  }
+  if (this->vflag_atom) {
+    this->memoryKK->destroy_kokkos(k_vatom, this->vatom);
+    this->memoryKK->create_kokkos(k_vatom, this->vatom, this->maxvatom, "pair:vatom");
+    d_vatom = k_vatom.template view<DeviceType>();
+  }
+  eflag_global_kk = this->eflag_global;
+  eflag_atom_kk = this->eflag_atom;
+  vflag_global_kk = this->vflag_global;
+  vflag_atom_kk = this->vflag_atom;
+  vflag_either_kk = this->vflag_either;
+
+  this->atomKK->sync(this->execution_space,
+                     X_MASK | V_MASK | F_MASK | TYPE_MASK | TAG_MASK | ENERGY_MASK | VIRIAL_MASK);
+  x = this->atomKK->k_x.template view<DeviceType>();
+  v = this->atomKK->k_v.template view<DeviceType>();
+  f = this->atomKK->k_f.template view<DeviceType>();
+  type = this->atomKK->k_type.template view<DeviceType>();
+  tag = this->atomKK->k_tag.template view<DeviceType>();
+  k_cutsq.template sync<DeviceType>();
+  k_params.template sync<DeviceType>();
+  for (int k = 0; k < 4; k++) special_lj_kk[k] = this->force->special_lj[k];
+  nlocal = this->atom->nlocal;
+  timestep_kk = this->update->ntimestep;
+  inv_sqrt_dt = 1.0 / std::sqrt(this->update->dt);
+
+  auto *k_list = static_cast<NeighListKokkos<DeviceType> *>(this->list);
+  d_numneigh = k_list->d_numneigh;
+  d_neighbors = k_list->d_neighbors;
+  d_ilist = k_list->d_ilist;
+
+  need_dup = this->lmp->kokkos->template need_dup<DeviceType>();
+  if (need_dup) {
+    dup_f = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(f);
+    dup_eatom = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(d_eatom);
+    dup_vatom = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(d_vatom);
+  } else {
+    ndup_f = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterNonDuplicated>(f);
+    ndup_eatom =
+        Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterNonDuplicated>(d_eatom);
+    ndup_vatom =
+        Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterNonDuplicated>(d_vatom);
+  }
+
+  EV_FLOAT ev;
+  this->copymode = 1;
+  if (neighflag == HALF)
+    launch<HALF>(this->list->inum, ev);
+  else
+    launch<HALFTHREAD>(this->list->inum, ev);
+  if (need_dup) Kokkos::Experimental::contribute(f, dup_f);
+
+  if (this->eflag_global) this->eng_vdwl += ev.evdwl;
+  if (this->vflag_global)
+    for (int k = 0; k < 6; k++) this->virial[k] += ev.v[k];
+  if (this->vflag_fdotr) pair_virial_fdotr_compute(this);
+  if (this->eflag_atom) {
+    if (need_dup) Kokkos::Experimental::contribute(d_eatom, dup_eatom);
+    k_eatom.template modify<DeviceType>();
+    k_eatom.template sync<LMPHostType>();
+  }
+  if (this->vflag_atom) {
+    if (need_dup) Kokkos::Experimental::contribute(d_vatom, dup_vatom);
+    k_vatom.template modify<DeviceType>();
+    k_vatom.template sync<LMPHostType>();
+  }
+  this->copymode = 0;
+  this->atomKK->modified(this->execution_space,
+                         this->evflag ? (F_MASK | ENERGY_MASK | VIRIAL_MASK) : F_MASK);
+  if (need_dup) {
+    dup_f = {};
+    dup_eatom = {};
+    dup_vatom = {};
+  }
+}
+
+template <class DeviceType, class Style>
+template <int NEIGHFLAG>
+void PairDPDLawKokkos<DeviceType, Style>::launch(int inum, EV_FLOAT &ev)
+{
+  if (this->evflag)
+    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType, TagPairLaw<NEIGHFLAG, 1>>(0, inum),
+                            *this, ev);
+  else
+    Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType, TagPairLaw<NEIGHFLAG, 0>>(0, inum),
+                         *this);
+}
+
+template <class DeviceType, class Style>
+template <int NEIGHFLAG, int EVFLAG>
+KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
+    TagPairLaw<NEIGHFLAG, EVFLAG>, const int &ii) const
+{
+  EV_FLOAT ev;
+  this->template operator()<NEIGHFLAG, EVFLAG>(TagPairLaw<NEIGHFLAG, EVFLAG>(), ii, ev);
+}
+
+// One atom i and its half-list neighbours: the CPU loop's body (PairDPDBase::eval) with the
+// law evaluated the same way; forces on j go through the scatter view (duplicated per thread
+// with OpenMP and HALFTHREAD, plain with HALF).
+template <class DeviceType, class Style>
+template <int NEIGHFLAG, int EVFLAG>
+KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
+    TagPairLaw<NEIGHFLAG, EVFLAG>, const int &ii, EV_FLOAT &ev) const
+{
+  auto v_f = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_f),
+                               decltype(ndup_f)>::get(dup_f, ndup_f);
+  auto a_f = v_f.template access<AtomicDup_v<NEIGHFLAG, DeviceType>>();
+
+  const int i = d_ilist[ii];
+  const double xi[3] = {x(i, 0), x(i, 1), x(i, 2)};
+  const double vi[3] = {v(i, 0), v(i, 1), v(i, 2)};
+  const int itype = type(i);
+  const tagint tagi = tag(i);
+  const etd::PairStep step{this->noise, timestep_kk, inv_sqrt_dt};
+  double fi[3] = {0.0, 0.0, 0.0};
+
+  const int jnum = d_numneigh[i];
+  for (int jj = 0; jj < jnum; jj++) {
+    int j = d_neighbors(i, jj);
+    const double factor = special_lj_kk[(j >> SBBITS) & 3];
+    j &= NEIGHMASK;
+    etd::PairGeometry g;
+    g.del[0] = xi[0] - x(j, 0);
+    g.del[1] = xi[1] - x(j, 1);
+    g.del[2] = xi[2] - x(j, 2);
+    g.rsq = g.del[0] * g.del[0] + g.del[1] * g.del[1] + g.del[2] * g.del[2];
+    const int jtype = type(j);
+    if (g.rsq >= d_cutsq(itype, jtype)) continue;
+    g.r = std::sqrt(g.rsq);
+    if (g.r < Base::MIN_DISTANCE) continue;
+    g.rinv = 1.0 / g.r;
+    g.special = factor;
+
+    const Coefficients &c = params(itype, jtype);
+    const double vj[3] = {v(j, 0), v(j, 1), v(j, 2)};
+    Law pair(c, g);
+    const etd::PairMotion motion{vi, vj, nullptr, nullptr, tagi, tag(j)};
+    pair.template evaluate<1>(motion, step);
+    for (int k = 0; k < 3; k++) {
+      fi[k] += pair.force[k];
+      a_f(j, k) -= pair.force[k];
+    }
+    if (EVFLAG) {
+      const double evdwl =
+          (eflag_global_kk || eflag_atom_kk) ? Law::energy(c, g.rsq, g.r, g.special) : 0.0;
+      if (eflag_global_kk) ev.evdwl += evdwl;
+      if (eflag_atom_kk || vflag_either_kk)
+        this->template ev_tally<NEIGHFLAG>(ev, i, j, evdwl, pair.fpair, g.del[0], g.del[1],
+                                           g.del[2]);
+    }
+  }
+  for (int k = 0; k < 3; k++) a_f(i, k) += fi[k];
+}
+
+// Per-atom energy (half to each of i and j) and the virial of a central pair force.
+template <class DeviceType, class Style>
+template <int NEIGHFLAG>
+KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::ev_tally(
+    EV_FLOAT &ev, int i, int j, double epair, double fpair, double delx, double dely,
+    double delz) const
+{
+  if (eflag_atom_kk) {
+    auto v_eatom = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_eatom),
+                                     decltype(ndup_eatom)>::get(dup_eatom, ndup_eatom);
+    auto a_eatom = v_eatom.template access<AtomicDup_v<NEIGHFLAG, DeviceType>>();
+    a_eatom[i] += 0.5 * epair;
+    a_eatom[j] += 0.5 * epair;
+  }
+  if (!vflag_either_kk) return;
+  const double w[6] = {delx * delx * fpair, dely * dely * fpair, delz * delz * fpair,
+                       delx * dely * fpair, delx * delz * fpair, dely * delz * fpair};
+  if (vflag_global_kk)
+    for (int k = 0; k < 6; k++) ev.v[k] += w[k];
+  if (vflag_atom_kk) {
+    auto v_vatom = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_vatom),
+                                     decltype(ndup_vatom)>::get(dup_vatom, ndup_vatom);
+    auto a_vatom = v_vatom.template access<AtomicDup_v<NEIGHFLAG, DeviceType>>();
+    for (int k = 0; k < 6; k++) {
+      a_vatom(i, k) += 0.5 * w[k];
+      a_vatom(j, k) += 0.5 * w[k];
+    }
+  }
+}
+
+template <class DeviceType, class Style> Pair *create_pair_style_kokkos(LAMMPS *lmp)
+{
+  return new PairDPDLawKokkos<DeviceType, Style>(lmp);
+}
+
+// The device variant: the kernel itself where the device is the host; in a LAMMPS built for a
+// GPU, a host instance that stops at init with an ERROR (no device code is compiled).
+template <class Style> Pair *create_pair_style_kokkos_device(LAMMPS *lmp)
+{
+  if constexpr (PairDPDLawKokkos<LMPDeviceType, Style>::device_is_host) {
+    return new PairDPDLawKokkos<LMPDeviceType, Style>(lmp);
+  } else {
+    auto *style = new PairDPDLawKokkos<LMPHostType, Style>(lmp);
+    style->refuse_device = true;
+    return style;
+  }
+}
+
+template <class Style>
+void register_pair_style_kokkos(lammpsplugin_t plugin, lammpsplugin_regfunc register_plugin,
+                                void *lmp)
+{
+  static const std::string kk = std::string(Style::name) + "/kk";
+  static const std::string device = kk + "/device";
+  static const std::string host = kk + "/host";
+  static const std::string info = std::string(Style::info) + " (KOKKOS)";
+  plugin.style = "pair";
+  plugin.info = info.c_str();
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair_style_kokkos_device<Style>;
+  plugin.name = kk.c_str();
+  (*register_plugin)(&plugin, lmp);
+  plugin.name = device.c_str();
+  (*register_plugin)(&plugin, lmp);
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair_style_kokkos<LMPHostType, Style>;
+  plugin.name = host.c_str();
+  (*register_plugin)(&plugin, lmp);
+}
+
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,233 @@
+// The KOKKOS styles (pair_style dpd/gen/kk) against the CPU styles in the same process, with
+// LAMMPS run as `-k on t N -sf kk` (N from ETD_KOKKOS_THREADS, default 1): forces, energy and
+// virial; trajectories under fix nve and both schemes of fix etd; compute dpd/split; kBT and P
+// beside LAMMPS's own dpd/kk; restart; bad input. Built and run only against a KOKKOS LAMMPS
+// (tools/kokkos/test.sh), on 1 and 2 ranks with 1 and 2 threads.
+#include "lammps_fixture.h"
+
+#include <gtest/gtest.h>
+
+#include "force.h"
+#include "lammps.h"
+#include "library.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+using etdtest::Lammps;
+
+namespace {
+
+const std::string DATA = etdtest::work_file("kokkos_styles.data");
+
+std::vector<std::string> kokkos_args()
+{
+  const char *threads = std::getenv("ETD_KOKKOS_THREADS");
+  return {"-k", "on", "t", threads ? threads : "1", "-sf", "kk"};
+}
+
+// n = 3 fluid of 648 atoms in a 6^3 box, two types, random velocities; IDs come from the data
+// file, so the noise (keyed on them) is the same on every rank count
+void setup_box(Lammps &l, double mass = 1.0, double dt = 0.01)
+{
+  etdtest::write_random_data(DATA, 648, 6.0, 4711, 2, 1.5);
+  l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+          "neigh_modify every 1 delay 0 check yes", "read_data " + DATA,
+          "mass * " + std::to_string(mass), "timestep " + std::to_string(dt),
+          "thermo_modify norm no", "compute virial all pressure NULL virial"});
+}
+
+const std::vector<std::string> GEN_S2 = {"pair_style dpd/gen 1.0 1.0 123",
+                                         "pair_coeff * * 25.0 4.5 2.0"};
+// s = 1/2, a separate dissipative cutoff and conservative exponent, a different cross pair
+const std::vector<std::string> GEN_MIXED = {
+    "pair_style dpd/gen 1.0 1.0 123", "pair_coeff 1 1 25.0 4.5 0.5 cut_d 0.9",
+    "pair_coeff 1 2 30.0 6.0 0.5 1.1 exp_c 0.5", "pair_coeff 2 2 18.75 3.0 1.0 cut_d 1.2"};
+
+double max_rel_diff(const std::vector<double> &a, const std::vector<double> &b)
+{
+  double worst = 0.0, scale = 0.0;
+  for (double v : b) scale = std::max(scale, std::fabs(v));
+  for (size_t i = 0; i < a.size(); i++) worst = std::max(worst, std::fabs(a[i] - b[i]) / scale);
+  return worst;
+}
+
+struct Snapshot {
+  std::vector<double> x, v, f, virial;
+  double pe;
+};
+
+Snapshot snapshot(Lammps &l)
+{
+  Snapshot s;
+  s.x = l.gather("x");
+  s.v = l.gather("v");
+  s.f = l.gather("f");
+  for (int k = 0; k < 6; k++) s.virial.push_back(l.compute_vector("virial", k));
+  s.pe = l.thermo("pe");
+  return s;
+}
+
+// the pair style an instance really runs (the suffix applied or not)
+std::string pair_style_of(Lammps &l)
+{
+  return l.lmp->force->pair_style;
+}
+
+// the same commands on the CPU styles and on the /kk styles
+struct Pair {
+  Snapshot cpu, kk;
+  std::vector<double> start_v;    // the velocities read from the data file
+};
+Pair run_both(const std::vector<std::string> &pair, const std::vector<std::string> &run,
+              double mass = 1.0, double dt = 0.01)
+{
+  Pair out;
+  for (bool kokkos : {false, true}) {
+    Lammps l(MPI_COMM_WORLD, true, kokkos ? kokkos_args() : std::vector<std::string>{});
+    setup_box(l, mass, dt);
+    l.cmds(pair);
+    if (!kokkos) out.start_v = l.gather("v");
+    l.cmds(run);
+    EXPECT_EQ(pair_style_of(l), kokkos ? "dpd/gen/kk" : "dpd/gen");
+    (kokkos ? out.kk : out.cpu) = snapshot(l);
+  }
+  return out;
+}
+
+}    // namespace
+
+TEST(KokkosStyles, ForcesEnergyAndVirialEqualTheCpuStyle)
+{
+  for (const auto &pair : {GEN_S2, GEN_MIXED}) {
+    const Pair p = run_both(pair, {"run 0 post no"});
+    EXPECT_LT(max_rel_diff(p.kk.f, p.cpu.f), 1e-12) << pair.back();
+    EXPECT_LT(max_rel_diff(p.kk.virial, p.cpu.virial), 1e-12) << pair.back();
+    EXPECT_NEAR(p.kk.pe, p.cpu.pe, 1e-12 * std::fabs(p.cpu.pe)) << pair.back();
+  }
+}
+
+// 50 steps: round-off from the summation order (a few 1e-16) grows by about 1e4 here
+TEST(KokkosStyles, TrajectoriesFollowTheCpuStyle)
+{
+  struct Case {
+    std::string fix;
+    double mass, dt;
+  };
+  for (const Case &c : {Case{"fix integrate all nve", 1.0, 0.01},
+                        Case{"fix integrate all etd scheme diagonal", 0.01, 0.002},
+                        Case{"fix integrate all etd scheme implicit", 0.01, 0.005}}) {
+    for (const auto &pair : {GEN_S2, GEN_MIXED}) {
+      const Pair p = run_both(pair, {c.fix, "run 50 post no"}, c.mass, c.dt);
+      EXPECT_LT(max_rel_diff(p.kk.x, p.cpu.x), 1e-8) << c.fix << ", " << pair.back();
+      EXPECT_LT(max_rel_diff(p.kk.v, p.cpu.v), 1e-8) << c.fix << ", " << pair.back();
+      // the velocities moved far from their start (else the comparison would prove nothing)
+      EXPECT_GT(max_rel_diff(p.kk.v, p.start_v), 0.1) << c.fix << ", " << pair.back();
+    }
+  }
+}
+
+// fix etd and compute dpd/split take their per-atom extras from the style's host loop
+TEST(KokkosStyles, ForceSplitEqualsTheCpuStyle)
+{
+  std::vector<double> split[2];
+  for (bool kokkos : {false, true}) {
+    Lammps l(MPI_COMM_WORLD, true, kokkos ? kokkos_args() : std::vector<std::string>{});
+    setup_box(l, 0.01, 0.002);
+    l.cmds(GEN_MIXED);
+    l.cmds({"fix integrate all etd scheme diagonal", "compute split all dpd/split",
+            "run 10 post no"});
+    split[kokkos] = l.gather_compute("split", 9);
+  }
+  EXPECT_LT(max_rel_diff(split[1], split[0]), 1e-10);
+  EXPECT_GT(*std::max_element(split[0].begin(), split[0].end()), 1.0);
+}
+
+// Mean temp and press of dpd/gen/kk + nve beside LAMMPS's own dpd/kk (same fluid, same step:
+// velocity-Verlet at dt = 0.01 runs about 0.7 % hot here). 3,000 atoms, means every 10 steps
+// over 1,500 steps after 300: standard errors about 0.2 % (temp) and 0.1 % (press).
+TEST(KokkosStyles, HoldsTemperatureAndPressureBesideLammpsDpdKokkos)
+{
+  const std::string data = etdtest::work_file("kokkos_fluid.data");
+  double temp[2], press[2];
+  for (int stock : {0, 1}) {
+    etdtest::write_random_data(data, 3000, 10.0, 2718, 1, 0.0);
+    Lammps l(MPI_COMM_WORLD, true, kokkos_args());
+    l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+            "neigh_modify every 1 delay 0 check yes", "read_data " + data, "mass 1 1.0",
+            "velocity all create 1.0 8731 mom yes dist gaussian", "timestep 0.01",
+            stock ? "pair_style dpd 1.0 1.0 4242" : "pair_style dpd/gen 1.0 1.0 4242",
+            stock ? "pair_coeff * * 25.0 4.5" : "pair_coeff * * 25.0 4.5 2.0",
+            "fix integrate all nve", "run 300 post no", "reset_timestep 0",
+            "fix average all ave/time 10 150 1500 c_thermo_temp c_thermo_press",
+            "run 1500 post no"});
+    EXPECT_EQ(pair_style_of(l), stock ? "dpd/kk" : "dpd/gen/kk");
+    temp[stock] = l.fix_vector("average", 0);
+    press[stock] = l.fix_vector("average", 1);
+  }
+  if (etdtest::world_rank() == 0)
+    std::printf("dpd/gen/kk temp %.4f press %.3f; dpd/kk temp %.4f press %.3f\n", temp[0],
+                press[0], temp[1], press[1]);
+  EXPECT_NEAR(temp[0], 1.0, 0.015);
+  EXPECT_NEAR(temp[0] / temp[1], 1.0, 0.01);
+  EXPECT_NEAR(press[0] / press[1], 1.0, 0.01);
+}
+
+// write_restart after 25 steps and a new instance from the file: the same state after 50 steps
+// as one run straight through (the noise is keyed on IDs and the timestep, not on a stream)
+TEST(KokkosStyles, RestartContinuesTheRun)
+{
+  const std::string restart = etdtest::work_file("kokkos_styles.restart");
+  std::vector<double> straight, resumed;
+  {
+    Lammps l(MPI_COMM_WORLD, true, kokkos_args());
+    setup_box(l);
+    l.cmds(GEN_MIXED);
+    l.cmds({"fix integrate all nve", "run 25 post no", "write_restart " + restart,
+            "run 25 post no"});
+    straight = l.gather("v");
+  }
+  {
+    Lammps l(MPI_COMM_WORLD, true, kokkos_args());
+    l.cmds({"read_restart " + restart, "comm_modify vel yes",
+            "neigh_modify every 1 delay 0 check yes", "fix integrate all nve",
+            "run 25 post no"});
+    EXPECT_EQ(pair_style_of(l), "dpd/gen/kk");
+    resumed = l.gather("v");
+  }
+  EXPECT_LT(max_rel_diff(resumed, straight), 1e-10);
+}
+
+TEST(KokkosStyles, BadInputStopsWithAnError)
+{
+  const auto setup = [](Lammps &l) { setup_box(l); };
+  // the CPU style's own checks, through the /kk style
+  etdtest::expect_errors(
+      {{{"pair_style dpd/gen 1.0 1.0 123", "pair_coeff * * 25.0 -4.5 2.0"},
+        "pair_coeff dpd/gen: gamma must be >= 0, got -4.5"},
+       {{"pair_style dpd/gen 1.0 1.0 123", "pair_coeff * * 25.0 4.5"}, "expected I J a gamma s"},
+       {{"pair_style dpd/gen 1.0 1.0 123", "pair_coeff 1 1 25.0 4.5 2.0", "run 0"},
+        "are not set"},    // (LAMMPS's own check or the style's, by version)
+       {{"comm_modify vel no", "pair_style dpd/gen 1.0 1.0 123", "pair_coeff * * 25.0 4.5 2.0",
+         "run 0"},
+        "comm_modify vel yes"}},
+      setup, kokkos_args());
+  // what the Kokkos loop does not serve (package kokkos options come before the box)
+  for (const std::string neigh : {"full", "half"}) {
+    std::vector<std::string> args = kokkos_args();
+    args.insert(args.end(), {"-pk", "kokkos", "neigh", neigh, "newton", "off"});
+    etdtest::expect_errors({{{"pair_style dpd/gen 1.0 1.0 123", "pair_coeff * * 25.0 4.5 2.0",
+                              "run 0"},
+                             "Pair style dpd/gen/kk requires a half neighbor list and newton on"}},
+                           setup, args);
+  }
+}
+
+// LAMMPS finalises Kokkos once, after the last instance and before MPI
+class KokkosFinalize : public ::testing::Environment {
+ public:
+  void TearDown() override { lammps_kokkos_finalize(); }
+};
+const auto *const kokkos_finalize = ::testing::AddGlobalTestEnvironment(new KokkosFinalize);
