@@ -2,7 +2,8 @@
 """The package's headline numbers on one generated page, bench/results.md: the speed-ups at equal
 accuracy and the cost of a step (from the accuracy matrix's records, bench/accuracy/results/*.jsonl,
 through python/etddpd/accuracy_matrix.py), the pair styles' throughput and its scaling
-(bench/results/throughput.md, scaling.md) and the validation ratios against published results
+(bench/results/throughput.md, scaling.md), the KOKKOS styles' threads against ranks
+(bench/kokkos/results/throughput.md) and the validation ratios against published results
 (from the studies' summaries under validation/). README.md and doc/*.rst link here instead of
 restating these numbers; unittest/python/test_results_page.py checks that they do.
 
@@ -161,6 +162,10 @@ def main():
     print("## Cost per atom-step against system size (bench/run_scaling.sh)")
     print()
     print(read("bench/results/scaling.md").rstrip())
+    print()
+    print("## Threads against ranks: the KOKKOS styles (bench/kokkos/run.sh)")
+    print()
+    print(read("bench/kokkos/results/throughput.md").rstrip())
 
 
 if __name__ == "__main__":

@@ -263,39 +263,54 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
   const etd::PairStep step{this->noise, timestep_kk, inv_sqrt_dt};
   double fi[3] = {0.0, 0.0, 0.0};
 
+  // as in the CPU loop (close_neighbors.h): the neighbours within the cutoff are gathered
+  // first, without a branch, then the work is done on those alone; in chunks, so that the
+  // scratch is a small array of the thread's own
+  constexpr int CHUNK = 64;
+  int close[CHUNK];
   const int jnum = d_numneigh[i];
-  for (int jj = 0; jj < jnum; jj++) {
-    int j = d_neighbors(i, jj);
-    const double factor = special_lj_kk[(j >> SBBITS) & 3];
-    j &= NEIGHMASK;
-    etd::PairGeometry g;
-    g.del[0] = xi[0] - x(j, 0);
-    g.del[1] = xi[1] - x(j, 1);
-    g.del[2] = xi[2] - x(j, 2);
-    g.rsq = g.del[0] * g.del[0] + g.del[1] * g.del[1] + g.del[2] * g.del[2];
-    const int jtype = type(j);
-    if (g.rsq >= d_cutsq(itype, jtype)) continue;
-    g.r = std::sqrt(g.rsq);
-    if (g.r < Base::MIN_DISTANCE) continue;
-    g.rinv = 1.0 / g.r;
-    g.special = factor;
-
-    const Coefficients &c = params(itype, jtype);
-    const double vj[3] = {v(j, 0), v(j, 1), v(j, 2)};
-    Law pair(c, g);
-    const etd::PairMotion motion{vi, vj, nullptr, nullptr, tagi, tag(j)};
-    pair.template evaluate<1>(motion, step);
-    for (int k = 0; k < 3; k++) {
-      fi[k] += pair.force[k];
-      a_f(j, k) -= pair.force[k];
+  for (int first = 0; first < jnum; first += CHUNK) {
+    const int last = first + CHUNK < jnum ? first + CHUNK : jnum;
+    int nclose = 0;
+    for (int jj = first; jj < last; jj++) {
+      const int entry = d_neighbors(i, jj);
+      const int j = entry & NEIGHMASK;
+      const double dx = xi[0] - x(j, 0), dy = xi[1] - x(j, 1), dz = xi[2] - x(j, 2);
+      close[nclose] = entry;
+      nclose += (dx * dx + dy * dy + dz * dz < d_cutsq(itype, type(j))) ? 1 : 0;
     }
-    if (EVFLAG) {
-      const double evdwl =
-          (eflag_global_kk || eflag_atom_kk) ? Law::energy(c, g.rsq, g.r, g.special) : 0.0;
-      if (eflag_global_kk) ev.evdwl += evdwl;
-      if (eflag_atom_kk || vflag_either_kk)
-        this->template ev_tally<NEIGHFLAG>(ev, i, j, evdwl, pair.fpair, g.del[0], g.del[1],
-                                           g.del[2]);
+    for (int c = 0; c < nclose; c++) {
+      int j = close[c];
+      const double factor = special_lj_kk[(j >> SBBITS) & 3];
+      j &= NEIGHMASK;
+      etd::PairGeometry g;
+      g.del[0] = xi[0] - x(j, 0);
+      g.del[1] = xi[1] - x(j, 1);
+      g.del[2] = xi[2] - x(j, 2);
+      g.rsq = g.del[0] * g.del[0] + g.del[1] * g.del[1] + g.del[2] * g.del[2];
+      g.r = std::sqrt(g.rsq);
+      if (g.r < Base::MIN_DISTANCE) continue;
+      g.rinv = 1.0 / g.r;
+      g.special = factor;
+
+      const int jtype = type(j);
+      const Coefficients &c_ij = params(itype, jtype);
+      const double vj[3] = {v(j, 0), v(j, 1), v(j, 2)};
+      Law pair(c_ij, g);
+      const etd::PairMotion motion{vi, vj, nullptr, nullptr, tagi, tag(j)};
+      pair.template evaluate<1>(motion, step);
+      for (int k = 0; k < 3; k++) {
+        fi[k] += pair.force[k];
+        a_f(j, k) -= pair.force[k];
+      }
+      if (EVFLAG) {
+        const double evdwl =
+            (eflag_global_kk || eflag_atom_kk) ? Law::energy(c_ij, g.rsq, g.r, g.special) : 0.0;
+        if (eflag_global_kk) ev.evdwl += evdwl;
+        if (eflag_atom_kk || vflag_either_kk)
+          this->template ev_tally<NEIGHFLAG>(ev, i, j, evdwl, pair.fpair, g.del[0], g.del[1],
+                                             g.del[2]);
+      }
     }
   }
   for (int k = 0; k < 3; k++) a_f(i, k) += fi[k];

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Threads against ranks: dpd/gen/kk (Kokkos OpenMP) beside dpd/gen on MPI ranks and beside
+# LAMMPS's dpd/kk and dpd, with fix nve on 24,000 atoms of the standard fluid, all with the
+# KOKKOS LAMMPS of tools/kokkos (one binary). The set-ups run alternated, ROUNDS times over, in
+# one sitting; each run's loop time goes to results/throughput.jsonl (replaced), and
+# table.py turns it into results/throughput.md.
+#   KOKKOS_SOURCE=... ETD_DPD_LAMMPS=trixie bash bench/kokkos/run.sh [ROUNDS [STEPS]]
+# The machine should be otherwise idle.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+root=$(cd "$here/../.." && pwd)
+rounds=${1:-3}
+steps=${2:-1000}
+prefix=$(bash "$root/tools/kokkos/build_lammps_kokkos.sh" | sed -n 's/^LAMMPS_KOKKOS_PREFIX=//p')
+build=${ETD_DPD_KOKKOS_BUILD:-$root/build-kokkos}
+plugin="$build/etddpdplugin.so"
+[ -f "$plugin" ] || { echo "no KOKKOS plugin at $plugin: run tools/kokkos/test.sh first" >&2; exit 1; }
+lmp="$prefix/bin/lmp"
+mpi=(mpirun --oversubscribe); [ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root)
+export OMP_PROC_BIND=false
+# name | ranks | threads (0: no Kokkos) | pair style
+setups=(
+  "dpd/gen, 2 ranks|2|0|dpd/gen"
+  "dpd/gen/kk, 1 rank x 2 threads|1|2|dpd/gen"
+  "dpd/gen/kk, 2 ranks x 1 thread|2|1|dpd/gen"
+  "dpd/kk, 1 rank x 2 threads|1|2|dpd"
+  "dpd, 2 ranks|2|0|dpd"
+  "dpd/gen, 1 rank|1|0|dpd/gen"
+)
+mkdir -p "$here/results"
+out="$here/results/throughput.jsonl"
+: >"$out"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+for round in $(seq "$rounds"); do
+  for setup in "${setups[@]}"; do
+    IFS='|' read -r name ranks threads pair <<<"$setup"
+    args=(-in "$here/in.kokkos_throughput" -var plugin "$plugin" -var pair "$pair" -var steps "$steps"
+          -log "$work/log" -screen none)
+    bind=()    # Open MPI binds each of 1 or 2 ranks to one core: threads would share it
+    [ "$threads" != 0 ] && args+=(-k on t "$threads" -sf kk)
+    [ "$threads" -gt 1 ] && bind=(--bind-to none)
+    "${mpi[@]}" "${bind[@]}" -np "$ranks" "$lmp" "${args[@]}"
+    loop=$(awk '/^BENCH/{b=1} b&&/^Loop time/{print $4; exit}' "$work/log")
+    style=$(awk '/^BENCH/{b=1} /pair [a-z\/]+, perpetual/{s=$3} END{print s}' "$work/log")
+    lammps=$(sed -n '1s/^LAMMPS (\(.*\))$/\1/p' "$work/log")
+    printf '{"round": %d, "setup": "%s", "pair_style": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "loop_s": %s, "lammps": "%s", "cores": %d}\n' \
+      "$round" "$name" "${style%,}" "$ranks" "$threads" "$steps" "$loop" "$lammps" "$(nproc)" | tee -a "$out"
+  done
+done
+/usr/bin/python3 "$here/table.py" "$out" | tee "$here/results/throughput.md"

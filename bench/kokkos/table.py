@@ -1,0 +1,39 @@
+#!/usr/bin/python3
+"""bench/kokkos/results/throughput.jsonl (run.sh) as a table: atom-steps per second of each
+set-up, mean +- sd over rounds, and the ratio to dpd/gen on 2 MPI ranks in the same round
+(mean +- sd, lowest).
+
+Usage: /usr/bin/python3 bench/kokkos/table.py results/throughput.jsonl > results/throughput.md
+"""
+import json
+import statistics
+import sys
+
+BASELINE = "dpd/gen, 2 ranks"
+
+
+def main(path):
+    with open(path) as handle:
+        runs = [json.loads(line) for line in handle if line.strip()]
+    rounds = sorted({r["round"] for r in runs})
+    loop = {(r["round"], r["setup"]): r["loop_s"] for r in runs}
+    setups = list(dict.fromkeys(r["setup"] for r in runs))
+    first = runs[0]
+    work = first["atoms"] * first["steps"]
+    print(f"Fix nve on {first['atoms']:,} atoms of the standard fluid, {first['steps']} steps per run, "
+          f"{len(rounds)} alternated rounds (bench/kokkos/run.sh), LAMMPS {first.get('lammps', '?')} with "
+          f"KOKKOS (OpenMP backend) on {first.get('cores', '?')} cores. Ratio: to {BASELINE} in the same round.")
+    print()
+    print("| set-up | pair style run | atom-steps/s (mean +- sd) | ratio to dpd/gen on 2 ranks (lowest) |")
+    print("|---|---|---|---|")
+    for setup in setups:
+        rates = [work / loop[(k, setup)] for k in rounds]
+        ratios = [loop[(k, BASELINE)] / loop[(k, setup)] for k in rounds]
+        style = next(r["pair_style"] for r in runs if r["setup"] == setup)
+        sd = statistics.stdev if len(rounds) > 1 else (lambda values: 0.0)
+        print(f"| {setup} | {style} | {statistics.mean(rates):.3e} +- {sd(rates):.1e} | "
+              f"{statistics.mean(ratios):.3f} +- {sd(ratios):.3f} ({min(ratios):.3f}) |")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])
