@@ -2,11 +2,14 @@
 #include "dpd_kernel.h"
 #include "dpd_random.h"
 #include "etd_coefficients.h"
+#include "normal_ziggurat.h"
 #include "reference_weights.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -277,6 +280,61 @@ TEST(PairKernel, EnergyIsIntegralOfConservativeForce)
           << "p=" << p << " r=" << r;
     }
     EXPECT_EQ(etd::pair_energy(c, 1.3 * 1.3, 1.3), 0.0);
+  }
+}
+
+// The ziggurat written for host and device draws what Boost.Random's does from the same words:
+// every result equal to the bit, and the same number of words used. 4 million draws reach the
+// normal's tail (beyond 3.44, about 2,300 times) and the exponential's shifted tail within it.
+TEST(NormalZiggurat, DrawsWhatBoostDrawsFromTheSameWords)
+{
+  const etd::ZigguratTables tables = etd::ZigguratTables::host();
+  std::mt19937_64 boost_words(20261127), our_words(20261127);
+  boost::random::normal_distribution<double> normal;
+  long tails = 0;
+  for (int k = 0; k < 4000000; k++) {
+    const double expected = normal(boost_words);
+    const double drawn = etd::unit_normal(our_words, tables);
+    ASSERT_EQ(std::memcmp(&expected, &drawn, sizeof(double)), 0) << "draw " << k;
+    tails += std::fabs(drawn) > tables.normal_x[1];
+  }
+  EXPECT_EQ(boost_words(), our_words());
+  EXPECT_GT(tails, 1500);
+  boost::random::exponential_distribution<double> exponential;
+  for (int k = 0; k < 1000000; k++) {
+    const double expected = exponential(boost_words);
+    const double drawn = etd::ziggurat::unit_exponential(our_words, tables);
+    ASSERT_EQ(std::memcmp(&expected, &drawn, sizeof(double)), 0) << "draw " << k;
+  }
+}
+
+// Words chosen to take the rare branches, each of which the random draws reach seldom or never:
+// a wedge whose uniform rounds to 1 and is drawn again (a word of all ones), and layer 0 beyond
+// the tail's start (low byte 0 or 1, abscissa near 1), once with bit 11 set, which Boost clears.
+TEST(NormalZiggurat, RareWordsTakeTheRareBranches)
+{
+  struct Words {
+    std::vector<std::uint64_t> list;
+    size_t next = 0;
+    std::uint64_t operator()() { return list[next++ % list.size()]; }
+    using result_type = std::uint64_t;
+    static constexpr std::uint64_t min() { return 0; }
+    static constexpr std::uint64_t max() { return ~std::uint64_t(0); }
+  };
+  const etd::ZigguratTables tables = etd::ZigguratTables::host();
+  boost::random::normal_distribution<double> normal;
+  const std::uint64_t ones = ~std::uint64_t(0);
+  const std::vector<std::vector<std::uint64_t>> cases = {
+      {0xffffffffffffff02ULL, ones, 0x8000000000000000ULL, 0x123456789abcdef0ULL},
+      {0xffffffffffffff00ULL, ones, 0x8000000000000000ULL, 0x4000000000000002ULL},
+      {0xfffffffffffff801ULL, 0x7777777777777777ULL, 0x3333333333333333ULL}};
+  for (const auto &list : cases) {
+    Words boost_words{list}, our_words{list};
+    const double expected = normal(boost_words);
+    const double drawn = etd::unit_normal(our_words, tables);
+    EXPECT_EQ(std::memcmp(&expected, &drawn, sizeof(double)), 0) << list[0];
+    EXPECT_EQ(boost_words.next, our_words.next) << list[0];
+    EXPECT_GE(our_words.next, 3u) << list[0];    // the branch was taken: more than one draw
   }
 }
 

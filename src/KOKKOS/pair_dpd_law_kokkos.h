@@ -12,9 +12,8 @@
 // copies of the atom arrays, which LAMMPS's KOKKOS package syncs around it. Those fixes and
 // computes run on the host in any case.
 //
-// The noise is drawn with Boost.Random's ziggurat, which runs on the host only: the style is
-// available on host execution spaces (Serial, OpenMP, Threads). In a LAMMPS built for a GPU the
-// device variant stops with an ERROR that says so.
+// The noise is Boost.Random's ziggurat as normal_ziggurat.h writes it for host and device, its
+// tables copied to the device's memory, so a GPU draws the numbers the host draws.
 #ifndef ETD_PAIR_DPD_LAW_KOKKOS_H
 #define ETD_PAIR_DPD_LAW_KOKKOS_H
 
@@ -60,9 +59,6 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   KOKKOS_INLINE_FUNCTION void operator()(TagPairLaw<NEIGHFLAG, EVFLAG>, const int &ii,
                                          EV_FLOAT &ev) const;
 
-  // created as the device variant in a LAMMPS whose device is not the host: init stops
-  bool refuse_device = false;
-
   // the views LAMMPS's f dot r virial reads
   typename AT::t_x_array_randomread x;
   typename AT::t_f_array f;
@@ -75,11 +71,14 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   int neighflag, nlocal;
   int eflag_global_kk, eflag_atom_kk, vflag_global_kk, vflag_atom_kk, vflag_either_kk;
   double special_lj_kk[4];
+  etd::PairNoise noise_kk;    // the style's noise, with the ziggurat's tables in DeviceType's memory
+  Kokkos::View<double *, DeviceType> d_ziggurat_tables;
   bigint timestep_kk;
   double inv_sqrt_dt;
   int need_dup;
 
   void use_host_loop();
+  void copy_ziggurat_tables();
   void compute_on_device(int eflag, int vflag);
   template <int NEIGHFLAG> void launch(int inum, EV_FLOAT &ev);
 

@@ -57,13 +57,8 @@ template <class DeviceType, class Style> void PairDPDLawKokkos<DeviceType, Style
 
 template <class DeviceType, class Style> void PairDPDLawKokkos<DeviceType, Style>::init_style()
 {
-  if (refuse_device)
-    this->error->all(FLERR,
-                     "Pair style {}/kk has no device kernel: its counter-based Gaussian noise "
-                     "(Boost.Random's ziggurat) runs on the host only; use {}/kk/host, or run "
-                     "without -sf kk",
-                     Style::name, Style::name);
   Base::init_style();
+  copy_ziggurat_tables();
   host_loop = false;
   neighflag = this->lmp->kokkos->neighflag;
   if (neighflag == FULL || this->force->newton_pair == 0)
@@ -77,6 +72,31 @@ template <class DeviceType, class Style> void PairDPDLawKokkos<DeviceType, Style
   this->execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
   this->datamask_read = EMPTY_MASK;
   this->datamask_modify = EMPTY_MASK;
+}
+
+// The noise of the style (its seed) with the ziggurat's tables where DeviceType reads them.
+template <class DeviceType, class Style>
+void PairDPDLawKokkos<DeviceType, Style>::copy_ziggurat_tables()
+{
+  noise_kk = this->noise;
+  if constexpr (!device_is_host) {
+    using Tables = etd::ZigguratTables;
+    const Tables host = Tables::host();
+    constexpr int N = Tables::NORMAL_SIZE, E = Tables::EXPONENTIAL_SIZE;
+    Kokkos::View<double *, Kokkos::HostSpace> staged("ziggurat tables (host)", 2 * N + 2 * E);
+    for (int k = 0; k < N; k++) {
+      staged(k) = host.normal_x[k];
+      staged(N + k) = host.normal_y[k];
+    }
+    for (int k = 0; k < E; k++) {
+      staged(2 * N + k) = host.exponential_x[k];
+      staged(2 * N + E + k) = host.exponential_y[k];
+    }
+    d_ziggurat_tables = Kokkos::View<double *, DeviceType>("ziggurat tables", 2 * N + 2 * E);
+    Kokkos::deep_copy(d_ziggurat_tables, staged);
+    const double *d = d_ziggurat_tables.data();
+    noise_kk.use_tables({d, d + N, d + 2 * N, d + 2 * N + E});
+  }
 }
 
 // A host neighbor list and host arrays for this run: LAMMPS syncs all of an atom's data to the
@@ -260,7 +280,7 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
   const double vi[3] = {v(i, 0), v(i, 1), v(i, 2)};
   const int itype = type(i);
   const tagint tagi = tag(i);
-  const etd::PairStep step{this->noise, timestep_kk, inv_sqrt_dt};
+  const etd::PairStep step{noise_kk, timestep_kk, inv_sqrt_dt};
   double fi[3] = {0.0, 0.0, 0.0};
 
   // as in the CPU loop (close_neighbors.h): the neighbours within the cutoff are gathered
@@ -351,19 +371,6 @@ template <class DeviceType, class Style> Pair *create_pair_style_kokkos(LAMMPS *
   return new PairDPDLawKokkos<DeviceType, Style>(lmp);
 }
 
-// The device variant: the kernel itself where the device is the host; in a LAMMPS built for a
-// GPU, a host instance that stops at init with an ERROR (no device code is compiled).
-template <class Style> Pair *create_pair_style_kokkos_device(LAMMPS *lmp)
-{
-  if constexpr (PairDPDLawKokkos<LMPDeviceType, Style>::device_is_host) {
-    return new PairDPDLawKokkos<LMPDeviceType, Style>(lmp);
-  } else {
-    auto *style = new PairDPDLawKokkos<LMPHostType, Style>(lmp);
-    style->refuse_device = true;
-    return style;
-  }
-}
-
 template <class Style>
 void register_pair_style_kokkos(lammpsplugin_t plugin, lammpsplugin_regfunc register_plugin,
                                 void *lmp)
@@ -374,7 +381,7 @@ void register_pair_style_kokkos(lammpsplugin_t plugin, lammpsplugin_regfunc regi
   static const std::string info = std::string(Style::info) + " (KOKKOS)";
   plugin.style = "pair";
   plugin.info = info.c_str();
-  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair_style_kokkos_device<Style>;
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair_style_kokkos<LMPDeviceType, Style>;
   plugin.name = kk.c_str();
   (*register_plugin)(&plugin, lmp);
   plugin.name = device.c_str();

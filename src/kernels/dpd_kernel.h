@@ -8,6 +8,8 @@
 #ifndef ETD_DPD_KERNEL_H
 #define ETD_DPD_KERNEL_H
 
+#include "host_device.h"
+
 #include <cmath>
 
 namespace etd {
@@ -28,7 +30,7 @@ inline PowerKind classify_power(double exponent)
 }
 
 // q^exponent for 0 <= q <= 1.
-inline double power_of(double q, PowerKind kind, double exponent)
+ETD_HOST_DEVICE inline double power_of(double q, PowerKind kind, double exponent)
 {
   switch (kind) {
     case PowerKind::Zero:
@@ -51,7 +53,7 @@ inline double power_of(double q, PowerKind kind, double exponent)
 }
 
 // Noise amplitude from the fluctuation-dissipation theorem.
-inline double noise_amplitude(double gamma, double kT)
+ETD_HOST_DEVICE inline double noise_amplitude(double gamma, double kT)
 {
   return std::sqrt(2.0 * gamma * kT);
 }
@@ -96,7 +98,7 @@ struct PairCoefficients {
 
 // sqrt(special) for the random force's special-bond factor; exact 1 for the common unbonded pair
 // without a square root (std::sqrt(1.0) is 1.0, so the result is the same either way).
-inline double special_root(double special)
+ETD_HOST_DEVICE inline double special_root(double special)
 {
   return special == 1.0 ? 1.0 : std::sqrt(special);
 }
@@ -108,7 +110,7 @@ struct DissipativeWeights {
   double dissipative = 0.0;    // w_D
 };
 
-inline DissipativeWeights dissipative_weights(double q, PowerKind dissipative_kind,
+ETD_HOST_DEVICE inline DissipativeWeights dissipative_weights(double q, PowerKind dissipative_kind,
                                               PowerKind random_kind, double s)
 {
   DissipativeWeights w;
@@ -126,7 +128,7 @@ struct PairDissipation {
   double noise = 0.0;
 };
 
-inline PairDissipation pair_dissipation(const PairCoefficients &c, double r, double special = 1.0)
+ETD_HOST_DEVICE inline PairDissipation pair_dissipation(const PairCoefficients &c, double r, double special = 1.0)
 {
   const double q = 1.0 - r * c.inv_rc_d;
   const DissipativeWeights w = dissipative_weights(q, c.dissipative_kind, c.random_kind, c.s);
@@ -142,11 +144,11 @@ struct PairForce {
   double dissipative = 0.0;
   double random = 0.0;
   double friction = 0.0;    // gamma w_D: the pair's contribution to the friction operator
-  double total() const { return conservative + dissipative + random; }
+  ETD_HOST_DEVICE double total() const { return conservative + dissipative + random; }
 };
 
 // special a (1 - r/rc_C)^p inside rc_C, zero outside: the conservative force along e.
-inline double dpd_conservative(const PairCoefficients &c, double rsq, double r,
+ETD_HOST_DEVICE inline double dpd_conservative(const PairCoefficients &c, double rsq, double r,
                                double special = 1.0)
 {
   if (rsq >= c.rcsq_c) return 0.0;
@@ -157,7 +159,7 @@ inline double dpd_conservative(const PairCoefficients &c, double rsq, double r,
 // r: distance, e_dot_v: (e . v_ij), theta: unit Gaussian, inv_sqrt_dt: 1/sqrt(dt),
 // special: special-bond factor (dissipative scales by it, random by its root), conservative:
 // the conservative force along e (a law other than dpd_conservative may supply its own).
-inline PairForce pair_force(const PairCoefficients &c, double rsq, double r, double e_dot_v,
+ETD_HOST_DEVICE inline PairForce pair_force(const PairCoefficients &c, double rsq, double r, double e_dot_v,
                             double theta, double inv_sqrt_dt, double special, double conservative)
 {
   PairForce out;
@@ -171,14 +173,14 @@ inline PairForce pair_force(const PairCoefficients &c, double rsq, double r, dou
   return out;
 }
 
-inline PairForce pair_force(const PairCoefficients &c, double rsq, double r, double e_dot_v,
+ETD_HOST_DEVICE inline PairForce pair_force(const PairCoefficients &c, double rsq, double r, double e_dot_v,
                             double theta, double inv_sqrt_dt, double special = 1.0)
 {
   return pair_force(c, rsq, r, e_dot_v, theta, inv_sqrt_dt, special,
                     dpd_conservative(c, rsq, r, special));
 }
 
-inline double pair_energy(const PairCoefficients &c, double rsq, double r, double special = 1.0)
+ETD_HOST_DEVICE inline double pair_energy(const PairCoefficients &c, double rsq, double r, double special = 1.0)
 {
   if (rsq >= c.rcsq_c) return 0.0;
   const double q = 1.0 - r * c.inv_rc_c;

@@ -29,7 +29,10 @@
 
 // A law's per-pair functions are inlined into the pair loop: out of line, the law's state goes
 // through memory (GCC's own choice for dpd/fpm's evaluate made its loop 1.7 times as slow).
-#if defined(__GNUC__)
+#if defined(__CUDACC__) || defined(__HIPCC__)
+#define ETD_PAIR_INLINE __host__ __device__ __forceinline__
+#define ETD_PAIR_NOINLINE __host__ __device__ __noinline__
+#elif defined(__GNUC__)
 #define ETD_PAIR_INLINE inline __attribute__((always_inline))
 #define ETD_PAIR_NOINLINE __attribute__((noinline))
 #else
@@ -76,11 +79,11 @@ struct PairStep {
 
 // DPD's conservative force a (1 - r/rc_C)^p with energy a rc_C/(p+1) (1 - r/rc_C)^(p+1).
 struct PowerConservative {
-  static double force(const PairCoefficients &c, double rsq, double r, double special)
+  ETD_HOST_DEVICE static double force(const PairCoefficients &c, double rsq, double r, double special)
   {
     return dpd_conservative(c, rsq, r, special);
   }
-  static double energy(const PairCoefficients &c, double rsq, double r, double special)
+  ETD_HOST_DEVICE static double energy(const PairCoefficients &c, double rsq, double r, double special)
   {
     return pair_energy(c, rsq, r, special);
   }
@@ -94,12 +97,12 @@ template <class Conservative> class CentralDpdLaw {
   using Friction = PairCoefficients;
   static constexpr bool rotation = false;
   static constexpr bool central = true;
-  static const Friction &friction(const Coefficients &c) { return c; }
+  ETD_HOST_DEVICE static const Friction &friction(const Coefficients &c) { return c; }
 
   double force[3];
   double fpair;
 
-  CentralDpdLaw(const Coefficients &c, const PairGeometry &g) : c_(c), g_(g) {}
+  ETD_HOST_DEVICE CentralDpdLaw(const Coefficients &c, const PairGeometry &g) : c_(c), g_(g) {}
 
   template <bool DISSIPATIVE> ETD_PAIR_INLINE void evaluate(const PairMotion &m, const PairStep &s)
   {
@@ -132,11 +135,11 @@ template <class Conservative> class CentralDpdLaw {
       for (int k = 0; k < 3; k++) parts[p][k] = magnitude[p] * e[k];
   }
 
-  static double conservative(const Coefficients &c, double rsq, double r, double special)
+  ETD_HOST_DEVICE static double conservative(const Coefficients &c, double rsq, double r, double special)
   {
     return Conservative::force(c, rsq, r, special);
   }
-  static double energy(const Coefficients &c, double rsq, double r, double special)
+  ETD_HOST_DEVICE static double energy(const Coefficients &c, double rsq, double r, double special)
   {
     return Conservative::energy(c, rsq, r, special);
   }
