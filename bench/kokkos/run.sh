@@ -18,14 +18,16 @@ plugin="$build/etddpdplugin.so"
 lmp="$prefix/bin/lmp"
 mpi=(mpirun --oversubscribe); [ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root)
 export OMP_PROC_BIND=false
-# name | ranks | threads (0: no Kokkos) | pair style
+# name | ranks | threads (0: no Kokkos) | pair style | integrator (nve, or etd: fix etd diagonal)
 setups=(
-  "dpd/gen, 2 ranks|2|0|dpd/gen"
-  "dpd/gen/kk, 1 rank x 2 threads|1|2|dpd/gen"
-  "dpd/gen/kk, 2 ranks x 1 thread|2|1|dpd/gen"
-  "dpd/kk, 1 rank x 2 threads|1|2|dpd"
-  "dpd, 2 ranks|2|0|dpd"
-  "dpd/gen, 1 rank|1|0|dpd/gen"
+  "dpd/gen, 2 ranks|2|0|dpd/gen|nve"
+  "dpd/gen/kk, 1 rank x 2 threads|1|2|dpd/gen|nve"
+  "dpd/gen/kk, 2 ranks x 1 thread|2|1|dpd/gen|nve"
+  "dpd/kk, 1 rank x 2 threads|1|2|dpd|nve"
+  "dpd, 2 ranks|2|0|dpd|nve"
+  "dpd/gen, 1 rank|1|0|dpd/gen|nve"
+  "dpd/gen + fix etd, 2 ranks|2|0|dpd/gen|etd"
+  "dpd/gen/kk + fix etd, 1 rank x 2 threads|1|2|dpd/gen|etd"
 )
 mkdir -p "$here/results"
 out="$here/results/throughput.jsonl"
@@ -34,8 +36,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 for round in $(seq "$rounds"); do
   for setup in "${setups[@]}"; do
-    IFS='|' read -r name ranks threads pair <<<"$setup"
+    IFS='|' read -r name ranks threads pair integrator <<<"$setup"
     args=(-in "$here/in.kokkos_throughput" -var plugin "$plugin" -var pair "$pair" -var steps "$steps"
+          -var integrator "$integrator"
           -log "$work/log" -screen none)
     bind=()    # Open MPI binds each of 1 or 2 ranks to one core: threads would share it
     [ "$threads" != 0 ] && args+=(-k on t "$threads" -sf kk)
@@ -44,8 +47,8 @@ for round in $(seq "$rounds"); do
     loop=$(awk '/^BENCH/{b=1} b&&/^Loop time/{print $4; exit}' "$work/log")
     style=$(awk '/^BENCH/{b=1} /pair [a-z\/]+, perpetual/{s=$3} END{print s}' "$work/log")
     lammps=$(sed -n '1s/^LAMMPS (\(.*\))$/\1/p' "$work/log")
-    printf '{"round": %d, "setup": "%s", "pair_style": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "loop_s": %s, "lammps": "%s", "cores": %d}\n' \
-      "$round" "$name" "${style%,}" "$ranks" "$threads" "$steps" "$loop" "$lammps" "$(nproc)" | tee -a "$out"
+    printf '{"round": %d, "setup": "%s", "pair_style": "%s", "integrator": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "loop_s": %s, "lammps": "%s", "cores": %d}\n' \
+      "$round" "$name" "${style%,}" "$integrator" "$ranks" "$threads" "$steps" "$loop" "$lammps" "$(nproc)" | tee -a "$out"
   done
 done
 /usr/bin/python3 "$here/table.py" "$out" | tee "$here/results/throughput.md"

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """bench/kokkos/results/throughput.jsonl (run.sh) as a table: atom-steps per second of each
-set-up, mean +- sd over rounds, and the ratio to dpd/gen on 2 MPI ranks in the same round
-(mean +- sd, lowest).
+set-up, mean +- sd over rounds, and the ratio to dpd/gen on 2 MPI ranks with the same integrator
+in the same round (mean +- sd, lowest).
 
 Usage: /usr/bin/python3 bench/kokkos/table.py results/throughput.jsonl > results/throughput.md
 """
@@ -9,7 +9,13 @@ import json
 import statistics
 import sys
 
-BASELINE = "dpd/gen, 2 ranks"
+INTEGRATORS = {"nve": "fix nve", "etd": "fix etd scheme diagonal"}
+
+
+def baseline(runs, integrator):
+    """The set-up of dpd/gen on 2 MPI ranks without Kokkos with this integrator."""
+    return next(r["setup"] for r in runs if r.get("integrator", "nve") == integrator
+                and r["ranks"] == 2 and r["threads"] == 0 and r["pair_style"] == "dpd/gen")
 
 
 def main(path):
@@ -20,18 +26,23 @@ def main(path):
     setups = list(dict.fromkeys(r["setup"] for r in runs))
     first = runs[0]
     work = first["atoms"] * first["steps"]
-    print(f"Fix nve on {first['atoms']:,} atoms of the standard fluid, {first['steps']} steps per run, "
+    print(f"{first['atoms']:,} atoms of the standard fluid, {first['steps']} steps per run, "
           f"{len(rounds)} alternated rounds (bench/kokkos/run.sh), LAMMPS {first.get('lammps', '?')} with "
-          f"KOKKOS (OpenMP backend) on {first.get('cores', '?')} cores. Ratio: to {BASELINE} in the same round.")
+          f"KOKKOS (OpenMP backend) on {first.get('cores', '?')} cores. fix nve: m = 1, dt = 0.01; "
+          "fix etd scheme diagonal: m = 0.01, dt = 0.002. Ratio: to dpd/gen on 2 MPI ranks with the "
+          "same integrator, in the same round.")
     print()
-    print("| set-up | pair style run | atom-steps/s (mean +- sd) | ratio to dpd/gen on 2 ranks (lowest) |")
-    print("|---|---|---|---|")
+    print("| set-up | integrator | pair style run | atom-steps/s (mean +- sd) | ratio to dpd/gen on 2 ranks (lowest) |")
+    print("|---|---|---|---|---|")
     for setup in setups:
+        run = next(r for r in runs if r["setup"] == setup)
+        integrator = run.get("integrator", "nve")
+        base = baseline(runs, integrator)
         rates = [work / loop[(k, setup)] for k in rounds]
-        ratios = [loop[(k, BASELINE)] / loop[(k, setup)] for k in rounds]
-        style = next(r["pair_style"] for r in runs if r["setup"] == setup)
+        ratios = [loop[(k, base)] / loop[(k, setup)] for k in rounds]
         sd = statistics.stdev if len(rounds) > 1 else (lambda values: 0.0)
-        print(f"| {setup} | {style} | {statistics.mean(rates):.3e} +- {sd(rates):.1e} | "
+        print(f"| {setup} | {INTEGRATORS[integrator]} | {run['pair_style']} | "
+              f"{statistics.mean(rates):.3e} +- {sd(rates):.1e} | "
               f"{statistics.mean(ratios):.3f} +- {sd(ratios):.3f} ({min(ratios):.3f}) |")
 
 

@@ -6,11 +6,13 @@
 // Coefficients, pair_coeff, restart and write_data are the CPU style's (the class derives from
 // it, as LAMMPS's dpd/kk derives from dpd).
 //
-// When fix etd or compute dpd/split asks the style for its per-atom extras (diagonal friction,
-// force split, conservative force only, a newton-off list), the style runs the CPU loop on the
-// host for that run: it asks LAMMPS for a host neighbor list and reads and writes the host
-// copies of the atom arrays, which LAMMPS's KOKKOS package syncs around it. Those fixes and
-// computes run on the host in any case.
+// The per-atom extras that fix etd's diagonal scheme and compute dpd/split ask of the style (the
+// diagonal friction, the force split) are summed in the kernel too, then handed over in the
+// host arrays of the CPU style, whose reverse communication adds the ghosts' parts. What the
+// implicit scheme asks (the conservative force alone, a newton-off list) the style serves with
+// the CPU loop on the host for that run: it asks LAMMPS for a host neighbor list and reads and
+// writes the host copies of the atom arrays, which LAMMPS's KOKKOS package syncs around it.
+// Those fixes and computes run on the host in any case.
 //
 // The noise is Boost.Random's ziggurat as normal_ziggurat.h writes it for host and device, its
 // tables copied to the device's memory, so a GPU draws the numbers the host draws.
@@ -46,18 +48,18 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   double init_one(int i, int j) override;
   void compute(int eflag, int vflag) override;
 
-  // what the package's fixes and computes ask of the style: served by the host loop
-  void request_diagonal_friction() override;
-  void request_force_split() override;
+  // what the implicit scheme asks of the style: served by the host loop
   void request_conservative_only() override;
   void request_newton_off_list() override;
 
-  template <int NEIGHFLAG, int EVFLAG> struct TagPairLaw {};
-  template <int NEIGHFLAG, int EVFLAG>
-  KOKKOS_INLINE_FUNCTION void operator()(TagPairLaw<NEIGHFLAG, EVFLAG>, const int &ii) const;
-  template <int NEIGHFLAG, int EVFLAG>
-  KOKKOS_INLINE_FUNCTION void operator()(TagPairLaw<NEIGHFLAG, EVFLAG>, const int &ii,
-                                         EV_FLOAT &ev) const;
+  // FRICTION, SPLIT: the kernel also sums the diagonal friction, the force split
+  template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT> struct TagPairLaw {};
+  template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT>
+  KOKKOS_INLINE_FUNCTION void operator()(TagPairLaw<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>,
+                                         const int &ii) const;
+  template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT>
+  KOKKOS_INLINE_FUNCTION void operator()(TagPairLaw<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>,
+                                         const int &ii, EV_FLOAT &ev) const;
 
   // the views LAMMPS's f dot r virial reads
   typename AT::t_x_array_randomread x;
@@ -81,6 +83,9 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   void copy_ziggurat_tables();
   void compute_on_device(int eflag, int vflag);
   template <int NEIGHFLAG> void launch(int inum, EV_FLOAT &ev);
+  template <int NEIGHFLAG, int FRICTION, int SPLIT> void launch_with(int inum, EV_FLOAT &ev);
+  void extras_to_device(bool extras);
+  void extras_to_host(bool extras);
 
   template <int NEIGHFLAG>
   KOKKOS_INLINE_FUNCTION void ev_tally(EV_FLOAT &ev, int i, int j, double epair, double fpair,
@@ -113,6 +118,15 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   Kokkos::DualView<Coefficients **, Kokkos::LayoutRight, DeviceType> k_params;
   typename Kokkos::DualView<Coefficients **, Kokkos::LayoutRight, DeviceType>::t_dev_const_um
       params;
+
+  // the extras: views of the CPU style's host arrays where DeviceType can read host memory,
+  // else device arrays copied to them after the kernel
+  static constexpr bool reads_host_memory =
+      Kokkos::SpaceAccessibility<typename DeviceType::memory_space, Kokkos::HostSpace>::accessible;
+  using ExtrasView = Kokkos::View<double **, Kokkos::LayoutRight, DeviceType>;
+  ExtrasView d_friction, d_split;
+  DupScatterView<double **, Kokkos::LayoutRight> dup_friction, dup_split;
+  NonDupScatterView<double **, Kokkos::LayoutRight> ndup_friction, ndup_split;
 
   DAT::tdual_efloat_1d k_eatom;
   DAT::tdual_virial_array k_vatom;

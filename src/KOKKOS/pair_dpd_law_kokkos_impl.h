@@ -113,18 +113,6 @@ template <class DeviceType, class Style> void PairDPDLawKokkos<DeviceType, Style
 }
 
 template <class DeviceType, class Style>
-void PairDPDLawKokkos<DeviceType, Style>::request_diagonal_friction()
-{
-  use_host_loop();
-  Base::request_diagonal_friction();
-}
-template <class DeviceType, class Style>
-void PairDPDLawKokkos<DeviceType, Style>::request_force_split()
-{
-  use_host_loop();
-  Base::request_force_split();
-}
-template <class DeviceType, class Style>
 void PairDPDLawKokkos<DeviceType, Style>::request_conservative_only()
 {
   use_host_loop();
@@ -210,6 +198,9 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
         Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterNonDuplicated>(d_vatom);
   }
 
+  const bool extras = this->prepare_extras();
+  extras_to_device(extras);
+
   EV_FLOAT ev;
   this->copymode = 1;
   if (neighflag == HALF)
@@ -217,6 +208,7 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
   else
     launch<HALFTHREAD>(this->list->inum, ev);
   if (need_dup) Kokkos::Experimental::contribute(f, dup_f);
+  extras_to_host(extras);
 
   if (this->eflag_global) this->eng_vdwl += ev.evdwl;
   if (this->vflag_global)
@@ -239,6 +231,57 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
     dup_f = {};
     dup_eatom = {};
     dup_vatom = {};
+    dup_friction = {};
+    dup_split = {};
+  }
+  // the ghosts' parts of the extras onto their owners, on the host arrays
+  this->finish_extras(extras);
+}
+
+// The extras' views for the kernel: the host arrays that prepare_extras() sized and zeroed
+// themselves where the kernel reads host memory, else zeroed device arrays of their shape.
+template <class DeviceType, class Style>
+void PairDPDLawKokkos<DeviceType, Style>::extras_to_device(bool extras)
+{
+  const int rows = this->nmax_extras;
+  const auto view_of = [&](bool wanted, double **host, int columns, ExtrasView &device,
+                           const char *name) {
+    if (!extras || !wanted) {
+      device = ExtrasView();
+    } else if constexpr (reads_host_memory) {
+      device = ExtrasView(&host[0][0], rows, columns);
+    } else {
+      if (static_cast<int>(device.extent(0)) != rows) device = ExtrasView(name, rows, columns);
+      Kokkos::deep_copy(device, 0.0);
+    }
+  };
+  view_of(this->want_friction, this->friction, Base::FRICTION_VALUES, d_friction, "pair:friction");
+  view_of(this->want_split, this->split, this->split_values, d_split, "pair:split");
+  if (need_dup) {
+    dup_friction = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(d_friction);
+    dup_split = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(d_split);
+  } else {
+    ndup_friction =
+        Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterNonDuplicated>(d_friction);
+    ndup_split = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterNonDuplicated>(d_split);
+  }
+}
+
+template <class DeviceType, class Style>
+void PairDPDLawKokkos<DeviceType, Style>::extras_to_host(bool extras)
+{
+  if (!extras) return;
+  if (need_dup) {
+    if (this->want_friction) Kokkos::Experimental::contribute(d_friction, dup_friction);
+    if (this->want_split) Kokkos::Experimental::contribute(d_split, dup_split);
+  }
+  if constexpr (!reads_host_memory) {
+    using HostView = Kokkos::View<double **, Kokkos::LayoutRight, Kokkos::HostSpace>;
+    const int rows = this->nmax_extras;
+    if (this->want_friction)
+      Kokkos::deep_copy(HostView(&this->friction[0][0], rows, Base::FRICTION_VALUES), d_friction);
+    if (this->want_split)
+      Kokkos::deep_copy(HostView(&this->split[0][0], rows, this->split_values), d_split);
   }
 }
 
@@ -246,34 +289,57 @@ template <class DeviceType, class Style>
 template <int NEIGHFLAG>
 void PairDPDLawKokkos<DeviceType, Style>::launch(int inum, EV_FLOAT &ev)
 {
-  if (this->evflag)
-    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType, TagPairLaw<NEIGHFLAG, 1>>(0, inum),
-                            *this, ev);
+  if (this->want_friction && this->want_split)
+    launch_with<NEIGHFLAG, 1, 1>(inum, ev);
+  else if (this->want_friction)
+    launch_with<NEIGHFLAG, 1, 0>(inum, ev);
+  else if (this->want_split)
+    launch_with<NEIGHFLAG, 0, 1>(inum, ev);
   else
-    Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType, TagPairLaw<NEIGHFLAG, 0>>(0, inum),
-                         *this);
+    launch_with<NEIGHFLAG, 0, 0>(inum, ev);
 }
 
 template <class DeviceType, class Style>
-template <int NEIGHFLAG, int EVFLAG>
+template <int NEIGHFLAG, int FRICTION, int SPLIT>
+void PairDPDLawKokkos<DeviceType, Style>::launch_with(int inum, EV_FLOAT &ev)
+{
+  if (this->evflag)
+    Kokkos::parallel_reduce(
+        Kokkos::RangePolicy<DeviceType, TagPairLaw<NEIGHFLAG, 1, FRICTION, SPLIT>>(0, inum), *this,
+        ev);
+  else
+    Kokkos::parallel_for(
+        Kokkos::RangePolicy<DeviceType, TagPairLaw<NEIGHFLAG, 0, FRICTION, SPLIT>>(0, inum), *this);
+}
+
+template <class DeviceType, class Style>
+template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT>
 KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
-    TagPairLaw<NEIGHFLAG, EVFLAG>, const int &ii) const
+    TagPairLaw<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>, const int &ii) const
 {
   EV_FLOAT ev;
-  this->template operator()<NEIGHFLAG, EVFLAG>(TagPairLaw<NEIGHFLAG, EVFLAG>(), ii, ev);
+  this->template operator()<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>(
+      TagPairLaw<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>(), ii, ev);
 }
 
 // One atom i and its half-list neighbours: the CPU loop's body (PairDPDBase::eval) with the
 // law evaluated the same way; forces on j go through the scatter view (duplicated per thread
 // with OpenMP and HALFTHREAD, plain with HALF).
 template <class DeviceType, class Style>
-template <int NEIGHFLAG, int EVFLAG>
+template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT>
 KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
-    TagPairLaw<NEIGHFLAG, EVFLAG>, const int &ii, EV_FLOAT &ev) const
+    TagPairLaw<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>, const int &ii, EV_FLOAT &ev) const
 {
   auto v_f = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_f),
                                decltype(ndup_f)>::get(dup_f, ndup_f);
   auto a_f = v_f.template access<AtomicDup_v<NEIGHFLAG, DeviceType>>();
+  // the extras' scatter views exist on every step (on empty views where not asked for)
+  auto v_friction = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_friction),
+                                      decltype(ndup_friction)>::get(dup_friction, ndup_friction);
+  auto a_friction = v_friction.template access<AtomicDup_v<NEIGHFLAG, DeviceType>>();
+  auto v_split = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_split),
+                                   decltype(ndup_split)>::get(dup_split, ndup_split);
+  auto a_split = v_split.template access<AtomicDup_v<NEIGHFLAG, DeviceType>>();
 
   const int i = d_ilist[ii];
   const double xi[3] = {x(i, 0), x(i, 1), x(i, 2)};
@@ -282,6 +348,8 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
   const tagint tagi = tag(i);
   const etd::PairStep step{noise_kk, timestep_kk, inv_sqrt_dt};
   double fi[3] = {0.0, 0.0, 0.0};
+  double gi[3] = {0.0, 0.0, 0.0};                                // i's diagonal friction
+  double si[Base::FORCE_SPLIT_VALUES] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 
   // as in the CPU loop (close_neighbors.h): the neighbours within the cutoff are gathered
   // first, without a branch, then the work is done on those alone; in chunks, so that the
@@ -323,6 +391,23 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
         fi[k] += pair.force[k];
         a_f(j, k) -= pair.force[k];
       }
+      if constexpr (FRICTION != 0) {
+        double gt[3], gr[3];
+        pair.friction_diagonal(gt, gr);
+        for (int k = 0; k < 3; k++) {
+          gi[k] += gt[k];
+          a_friction(j, k) += gt[k];
+        }
+      }
+      if constexpr (SPLIT != 0) {
+        double parts[3][3], torque_parts[2][3];
+        pair.split(parts, torque_parts);
+        for (int p = 0; p < 3; p++)
+          for (int k = 0; k < 3; k++) {
+            si[3 * p + k] += parts[p][k];
+            a_split(j, 3 * p + k) -= parts[p][k];
+          }
+      }
       if (EVFLAG) {
         const double evdwl =
             (eflag_global_kk || eflag_atom_kk) ? Law::energy(c_ij, g.rsq, g.r, g.special) : 0.0;
@@ -334,6 +419,10 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
     }
   }
   for (int k = 0; k < 3; k++) a_f(i, k) += fi[k];
+  if constexpr (FRICTION != 0)
+    for (int k = 0; k < 3; k++) a_friction(i, k) += gi[k];
+  if constexpr (SPLIT != 0)
+    for (int m = 0; m < Base::FORCE_SPLIT_VALUES; m++) a_split(i, m) += si[m];
 }
 
 // Per-atom energy (half to each of i and j) and the virial of a central pair force.
