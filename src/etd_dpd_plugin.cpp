@@ -5,6 +5,7 @@
 #include "error.h"
 #include "fix_etd_diagonal.h"
 #include "fix_etd_implicit.h"
+#include "fix_etd_options.h"
 #include "fix_wall_cylinder_bounce.h"
 #include "fix_wall_thermal_layer.h"
 #include "lammpsplugin.h"
@@ -12,6 +13,7 @@
 #include "pair_dpd_gen.h"
 #include "version.h"
 #ifdef ETD_DPD_KOKKOS
+#include "KOKKOS/fix_etd_diagonal_kokkos.h"
 #include "KOKKOS/pair_dpd_law_kokkos.h"
 #endif
 
@@ -27,14 +29,7 @@ Compute *create_compute_dpd_split(LAMMPS *lmp, int narg, char **arg)
 // fix etd has two schemes with different state and steps; 'scheme' picks the class
 Fix *create_fix_etd(LAMMPS *lmp, int narg, char **arg)
 {
-  for (int iarg = 3; iarg + 1 < narg; iarg += 2)
-    if (std::string(arg[iarg]) == "scheme") {
-      const std::string scheme = arg[iarg + 1];
-      if (scheme == "implicit") return new FixETDImplicit(lmp, narg, arg);
-      if (scheme != "diagonal")
-        lmp->error->all(
-            FLERR, "Illegal fix etd command: scheme must be diagonal or implicit, got {}", scheme);
-    }
+  if (etd::fix_etd_scheme_is_implicit(lmp, narg, arg)) return new FixETDImplicit(lmp, narg, arg);
   return new FixETDDiagonal(lmp, narg, arg);
 }
 Compute *create_compute_dpd_tcurrent(LAMMPS *lmp, int narg, char **arg)
@@ -67,6 +62,7 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   register_pair_style<PairDPDFPMStyle>(plugin, register_plugin, lmp);
 #ifdef ETD_DPD_KOKKOS
   register_pair_style_kokkos<PairDPDGenStyle>(plugin, register_plugin, lmp);
+  register_fix_etd_kokkos(plugin, register_plugin, lmp);
 #endif
 
   plugin.style = "compute";

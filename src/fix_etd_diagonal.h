@@ -41,11 +41,14 @@ class FixETDDiagonal : public Fix {
 
   enum class Noise { Piecewise, Exact };
 
- private:
+ protected:    // read by the KOKKOS variant (KOKKOS/fix_etd_diagonal_kokkos.h)
   int order;
   Noise noise;
   bool conserve_momentum;
   double dt;
+  std::vector<etd::DpdPairInterface *> dpd_styles;
+
+ private:
   etd::NeighborSafety neighbor_safety;
   double fingerprint_at_end = -1.0;    // order 2: velocity_fingerprint() at the end of the last run
   double velocity_fingerprint() const;
@@ -53,7 +56,6 @@ class FixETDDiagonal : public Fix {
   void update_angular_velocities();    // pair styles with rotation (dpd/fpm)
   bool rotation_checked = false;
   int rotation_active = 0;
-  std::vector<etd::DpdPairInterface *> dpd_styles;
   double **previous_forcing;        // [nmax][4]: A_(n-1) per component, and 1 where it is valid
   double momentum_correction[3];    // last correction applied (output)
 };

@@ -99,4 +99,17 @@ void check_moments_of_inertia(LAMMPS *lmp, int groupbit, const char *who)
                     who, bad);
 }
 
+bool fix_etd_scheme_is_implicit(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg)
+{
+  for (int iarg = 3; iarg + 1 < narg; iarg += 2)
+    if (std::string(arg[iarg]) == "scheme") {
+      const std::string scheme = arg[iarg + 1];
+      if (scheme == "implicit") return true;
+      if (scheme != "diagonal")
+        lmp->error->all(
+            FLERR, "Illegal fix etd command: scheme must be diagonal or implicit, got {}", scheme);
+    }
+  return false;
+}
+
 }    // namespace etd

@@ -20,6 +20,10 @@ void for_each_fix_etd_keyword(
 int fix_etd_choice(LAMMPS_NS::LAMMPS *lmp, const std::string &key, const std::string &value,
                    std::initializer_list<const char *> choices);
 
+// Whether a fix etd command asks for scheme implicit (else diagonal, the default); ERROR for
+// another scheme. The two schemes are different classes; this picks one.
+bool fix_etd_scheme_is_implicit(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg);
+
 // The keywords of scheme implicit (doc/fix_etd.rst), with their defaults.
 struct ImplicitOptions {
   bool overdamped = false;

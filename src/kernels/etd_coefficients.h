@@ -8,6 +8,8 @@
 #ifndef ETD_COEFFICIENTS_H
 #define ETD_COEFFICIENTS_H
 
+#include "host_device.h"
+
 #include <cmath>
 
 namespace etd {
@@ -84,7 +86,7 @@ inline EtdCoefficients etd_coefficients(double friction_rate, double dt, int ord
 //   e^z v + dt phi1(z) (F + Gamma v)/m = v + dt phi1(z) F/m,   since dt phi1(z) Gamma/m = -(e^z - 1).
 // The update is an explicit Euler step whose length dt phi1(z) <= dt shrinks where the friction
 // is stiff; this returns that effective step (one expm1, no decay factor needed).
-inline double first_order_effective_step(double friction_rate, double dt)
+ETD_HOST_DEVICE inline double first_order_effective_step(double friction_rate, double dt)
 {
   const double z = -friction_rate * dt;
   return (z == 0.0) ? dt : std::expm1(z) / (-friction_rate);
