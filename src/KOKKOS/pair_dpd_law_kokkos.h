@@ -87,6 +87,10 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   void extras_to_device(bool extras);
   void extras_to_host(bool extras);
 
+  template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT, class Forces, class Friction,
+            class Split>
+  KOKKOS_INLINE_FUNCTION void pair_loop(const int ii, EV_FLOAT &ev, Forces &a_f,
+                                        Friction &a_friction, Split &a_split) const;
   template <int NEIGHFLAG>
   KOKKOS_INLINE_FUNCTION void ev_tally(EV_FLOAT &ev, int i, int j, double epair, double fpair,
                                        double delx, double dely, double delz) const;

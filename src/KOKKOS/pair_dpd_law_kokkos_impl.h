@@ -322,25 +322,49 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
       TagPairLaw<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>(), ii, ev);
 }
 
-// One atom i and its half-list neighbours: the CPU loop's body (PairDPDBase::eval) with the
-// law evaluated the same way; forces on j go through the scatter view (duplicated per thread
-// with OpenMP and HALFTHREAD, plain with HALF).
+// Forces on j go through scatter views (duplicated per thread with OpenMP and HALFTHREAD, plain
+// with HALF). The accessors of the extras are made only where the kernel sums them: made for
+// every atom but unused, they cost the kernel its gain from a second thread.
 template <class DeviceType, class Style>
 template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT>
 KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
     TagPairLaw<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>, const int &ii, EV_FLOAT &ev) const
 {
-  auto v_f = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_f),
-                               decltype(ndup_f)>::get(dup_f, ndup_f);
-  auto a_f = v_f.template access<AtomicDup_v<NEIGHFLAG, DeviceType>>();
-  // the extras' scatter views exist on every step (on empty views where not asked for)
-  auto v_friction = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_friction),
-                                      decltype(ndup_friction)>::get(dup_friction, ndup_friction);
-  auto a_friction = v_friction.template access<AtomicDup_v<NEIGHFLAG, DeviceType>>();
-  auto v_split = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_split),
-                                   decltype(ndup_split)>::get(dup_split, ndup_split);
-  auto a_split = v_split.template access<AtomicDup_v<NEIGHFLAG, DeviceType>>();
+  using Dup = NeedDup_v<NEIGHFLAG, DeviceType>;
+  using Atomic = AtomicDup_v<NEIGHFLAG, DeviceType>;
+  auto v_f = ScatterViewHelper<Dup, decltype(dup_f), decltype(ndup_f)>::get(dup_f, ndup_f);
+  auto a_f = v_f.template access<Atomic>();
+  int none = 0;
+  if constexpr (FRICTION != 0) {
+    auto v_friction = ScatterViewHelper<Dup, decltype(dup_friction), decltype(ndup_friction)>::get(
+        dup_friction, ndup_friction);
+    auto a_friction = v_friction.template access<Atomic>();
+    if constexpr (SPLIT != 0) {
+      auto v_split =
+          ScatterViewHelper<Dup, decltype(dup_split), decltype(ndup_split)>::get(dup_split, ndup_split);
+      auto a_split = v_split.template access<Atomic>();
+      pair_loop<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>(ii, ev, a_f, a_friction, a_split);
+    } else {
+      pair_loop<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>(ii, ev, a_f, a_friction, none);
+    }
+  } else if constexpr (SPLIT != 0) {
+    auto v_split =
+        ScatterViewHelper<Dup, decltype(dup_split), decltype(ndup_split)>::get(dup_split, ndup_split);
+    auto a_split = v_split.template access<Atomic>();
+    pair_loop<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>(ii, ev, a_f, none, a_split);
+  } else {
+    pair_loop<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>(ii, ev, a_f, none, none);
+  }
+}
 
+// One atom i and its half-list neighbours: the CPU loop's body (PairDPDBase::eval) with the
+// law evaluated the same way.
+template <class DeviceType, class Style>
+template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT, class Forces, class Friction,
+          class Split>
+KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::pair_loop(
+    const int ii, EV_FLOAT &ev, Forces &a_f, Friction &a_friction, Split &a_split) const
+{
   const int i = d_ilist[ii];
   const double xi[3] = {x(i, 0), x(i, 1), x(i, 2)};
   const double vi[3] = {v(i, 0), v(i, 1), v(i, 2)};
