@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <set>
 #include <string>
 #include <utility>
@@ -17,22 +18,33 @@ using etdtest::Lammps;
 
 // The styles the doc pages describe: each page of doc/ opens with LAMMPS's ".. index:: pair_style
 // NAME" (fix NAME, compute NAME, or the bare NAME of a command).
+// Every `.. index::` line of the doc pages: "pair_style NAME", "fix NAME", ... or a command.
+// A KOKKOS variant NAME/kk is registered with NAME/kk/device and NAME/kk/host, in a plugin built
+// with the KOKKOS styles only (ETD_DPD_KOKKOS).
 static std::set<std::pair<std::string, std::string>> documented_styles()
 {
   std::set<std::pair<std::string, std::string>> styles;
   for (const auto &page : std::filesystem::directory_iterator(ETD_DOC_DIR)) {
     if (page.path().extension() != ".rst") continue;
     std::ifstream in(page.path());
-    std::string directive, first, second;
-    in >> directive >> first;
-    if (directive != "..") continue;
-    if (first != "index::") continue;
-    in >> first;
-    if (!std::getline(in, second) || second.empty()) {
-      styles.insert({"command", first});
-    } else {
-      second.erase(0, second.find_first_not_of(' '));
-      styles.insert({first == "pair_style" ? "pair" : first, second});
+    std::string line;
+    while (std::getline(in, line) && line.rfind(".. index::", 0) == 0) {
+      std::istringstream words(line.substr(10));
+      std::string first, second;
+      words >> first >> second;
+      if (second.empty()) {
+        styles.insert({"command", first});
+        continue;
+      }
+      const std::string category = first == "pair_style" ? "pair" : first;
+      const bool kokkos = second.size() > 3 && second.compare(second.size() - 3, 3, "/kk") == 0;
+#ifdef ETD_DPD_KOKKOS
+      if (kokkos)
+        for (const char *variant : {"/device", "/host"}) styles.insert({category, second + variant});
+#else
+      if (kokkos) continue;
+#endif
+      styles.insert({category, second});
     }
   }
   return styles;
@@ -40,8 +52,8 @@ static std::set<std::pair<std::string, std::string>> documented_styles()
 
 // Every style the package documents is registered, usable by LAMMPS under its name, and
 // nothing else is: the plugin's own registration list is exactly the styles with a doc page
-// (today eight: dpd/gen, dpd/fpm, etd, wall/thermal/layer, wall/cylinder/bounce, dpd/split,
-// dpd/tcurrent, dpd/design).
+// (eight: dpd/gen, dpd/fpm, etd, wall/thermal/layer, wall/cylinder/bounce, dpd/split,
+// dpd/tcurrent, dpd/design; with the KOKKOS styles also dpd/gen/kk and etd/kk).
 TEST(Plugin, RegistersEveryStyle)
 {
   Lammps l;

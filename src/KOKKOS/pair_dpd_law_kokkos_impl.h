@@ -335,10 +335,7 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
   auto v_f = ScatterViewHelper<Dup, decltype(dup_f), decltype(ndup_f)>::get(dup_f, ndup_f);
   auto a_f = v_f.template access<Atomic>();
   int none = 0;
-  if constexpr (FRICTION != 0) {
-    auto v_friction = ScatterViewHelper<Dup, decltype(dup_friction), decltype(ndup_friction)>::get(
-        dup_friction, ndup_friction);
-    auto a_friction = v_friction.template access<Atomic>();
+  const auto with_split = [&](auto &a_friction) {
     if constexpr (SPLIT != 0) {
       auto v_split =
           ScatterViewHelper<Dup, decltype(dup_split), decltype(ndup_split)>::get(dup_split, ndup_split);
@@ -347,13 +344,14 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
     } else {
       pair_loop<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>(ii, ev, a_f, a_friction, none);
     }
-  } else if constexpr (SPLIT != 0) {
-    auto v_split =
-        ScatterViewHelper<Dup, decltype(dup_split), decltype(ndup_split)>::get(dup_split, ndup_split);
-    auto a_split = v_split.template access<Atomic>();
-    pair_loop<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>(ii, ev, a_f, none, a_split);
+  };
+  if constexpr (FRICTION != 0) {
+    auto v_friction = ScatterViewHelper<Dup, decltype(dup_friction), decltype(ndup_friction)>::get(
+        dup_friction, ndup_friction);
+    auto a_friction = v_friction.template access<Atomic>();
+    with_split(a_friction);
   } else {
-    pair_loop<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>(ii, ev, a_f, none, none);
+    with_split(none);
   }
 }
 

@@ -10,7 +10,7 @@
 #      no Kokkos to share. One shared Kokkos in PREFIX/lib is the single copy that liblammps,
 #      the lmp executable and the plugin all link.
 #   2. LAMMPS (Debian's 4Jul2026 source, see tools/debian_lammps_source.sh) with the options of
-#      tools/bootstrap.sh plus PKG_KOKKOS, Kokkos_ENABLE_OPENMP/SERIAL, BUILD_OMP=on and
+#      tools/bootstrap.sh (the packages the whole test suite needs) plus PKG_KOKKOS, Kokkos_ENABLE_OPENMP/SERIAL, BUILD_OMP=on and
 #      EXTERNAL_KOKKOS=on against the Kokkos of step 1, installed into the same PREFIX.
 # Usage: tools/kokkos/build_lammps_kokkos.sh        (prints LAMMPS_KOKKOS_PREFIX=... last)
 # Environment:
@@ -64,7 +64,7 @@ kokkos_cmake_options=(
 lammps_cmake_options=(
   -D CMAKE_BUILD_TYPE=Release -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=on
   -D LAMMPS_EXCEPTIONS=on -D PKG_PLUGIN=on -D PKG_DPD-BASIC=on -D PKG_MOLECULE=on
-  -D PKG_DPD-REACT=on -D PKG_EXTRA-PAIR=off
+  -D PKG_EXTRA-FIX=on -D PKG_RIGID=on -D PKG_DPD-REACT=on -D PKG_EXTRA-PAIR=off
   -D PKG_KOKKOS=on -D EXTERNAL_KOKKOS=on -D Kokkos_ENABLE_OPENMP=on -D Kokkos_ENABLE_SERIAL=on
 )
 confhash=$(printf '%s\n' "${kokkos_cmake_options[@]}" "kokkos-$kver" "${lammps_cmake_options[@]}" "$tag" \
