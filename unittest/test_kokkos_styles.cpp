@@ -304,7 +304,14 @@ TEST(KokkosStyles, BadInputStopsWithAnError)
         "are not set"},    // (LAMMPS's own check or the style's, by version)
        {{"comm_modify vel no", "pair_style dpd/gen 1.0 1.0 123", "pair_coeff * * 25.0 4.5 2.0",
          "run 0"},
-        "comm_modify vel yes"}},
+        "comm_modify vel yes"},
+       // fix etd/kk: the CPU fix's keyword errors and neighbor-list guards
+       {{"pair_style dpd/gen 1.0 1.0 123", "pair_coeff * * 25.0 4.5 2.0",
+         "fix integrate all etd order 3"},
+        "order must be 1 or 2, got 3"},
+       {{"pair_style dpd/gen 1.0 1.0 123", "pair_coeff * * 25.0 4.5 2.0",
+         "neigh_modify every 1 delay 10 check yes", "fix integrate all etd", "run 2 post no"},
+        "lets atoms outrun the neighbor skin"}},
       setup, kokkos_args());
   // what the Kokkos loop does not serve (package kokkos options come before the box)
   for (const std::string neigh : {"full", "half"}) {

@@ -46,6 +46,7 @@ template <class DeviceType> std::string FixETDDiagonalKokkos<DeviceType>::host_r
 
 template <class DeviceType> void FixETDDiagonalKokkos<DeviceType>::init()
 {
+  atomKK->sync(Host, V_MASK | MASK_MASK);    // the CPU fix's checks read them on the host
   FixETDDiagonal::init();
   const std::string reason = host_reason();
   on_device = reason.empty();
