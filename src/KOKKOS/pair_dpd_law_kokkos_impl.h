@@ -146,6 +146,18 @@ void PairDPDLawKokkos<DeviceType, Style>::compute(int eflag, int vflag)
     compute_on_device(eflag, vflag);
 }
 
+// A duplicated scatter view of view (one copy per thread), kept from one compute to the next
+// while the shape holds and zeroed there: allocated anew at every compute, its pages fault in on
+// every thread at every step, which cost a second thread much of its gain.
+template <class Duplicated, class View> void keep_duplicated(Duplicated &dup, const View &view)
+{
+  const auto first = dup.subview();
+  if (dup.is_allocated() && first.extent(0) == view.extent(0) && first.extent(1) == view.extent(1))
+    dup.reset();
+  else
+    dup = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(view);
+}
+
 template <class DeviceType, class Style>
 void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag)
 {
@@ -187,7 +199,7 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
 
   need_dup = this->lmp->kokkos->template need_dup<DeviceType>();
   if (need_dup) {
-    dup_f = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(f);
+    keep_duplicated(dup_f, f);
     dup_eatom = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(d_eatom);
     dup_vatom = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(d_vatom);
   } else {
@@ -228,11 +240,8 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
   this->atomKK->modified(this->execution_space,
                          this->evflag ? (F_MASK | ENERGY_MASK | VIRIAL_MASK) : F_MASK);
   if (need_dup) {
-    dup_f = {};
     dup_eatom = {};
     dup_vatom = {};
-    dup_friction = {};
-    dup_split = {};
   }
   // the ghosts' parts of the extras onto their owners, on the host arrays
   this->finish_extras(extras);
@@ -258,8 +267,8 @@ void PairDPDLawKokkos<DeviceType, Style>::extras_to_device(bool extras)
   view_of(this->want_friction, this->friction, Base::FRICTION_VALUES, d_friction, "pair:friction");
   view_of(this->want_split, this->split, this->split_values, d_split, "pair:split");
   if (need_dup) {
-    dup_friction = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(d_friction);
-    dup_split = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(d_split);
+    keep_duplicated(dup_friction, d_friction);
+    keep_duplicated(dup_split, d_split);
   } else {
     ndup_friction =
         Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterNonDuplicated>(d_friction);
