@@ -38,8 +38,10 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   using value_type = EV_FLOAT;
   static_assert(Law::central && !Law::rotation,
                 "the Kokkos pair loop is written for central laws without rotation");
-  static constexpr bool device_is_host = std::is_same_v<
-      typename DeviceType::execution_space::memory_space, Kokkos::HostSpace>;
+  // DeviceType reads host memory: the kernel reads the ziggurat's tables and writes the extras
+  // where they are (else they are copied to and from device memory)
+  static constexpr bool reads_host_memory =
+      Kokkos::SpaceAccessibility<typename DeviceType::memory_space, Kokkos::HostSpace>::accessible;
 
   explicit PairDPDLawKokkos(class LAMMPS *);
   ~PairDPDLawKokkos() override;
@@ -70,8 +72,7 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
 
  private:
   bool host_loop;    // this run is served by the CPU loop (see the header)
-  int neighflag, nlocal;
-  int eflag_global_kk, eflag_atom_kk, vflag_global_kk, vflag_atom_kk, vflag_either_kk;
+  int neighflag;
   double special_lj_kk[4];
   etd::PairNoise noise_kk;    // the style's noise, with the ziggurat's tables in DeviceType's memory
   Kokkos::View<double *, DeviceType> d_ziggurat_tables;
@@ -123,10 +124,8 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   typename Kokkos::DualView<Coefficients **, Kokkos::LayoutRight, DeviceType>::t_dev_const_um
       params;
 
-  // the extras: views of the CPU style's host arrays where DeviceType can read host memory,
-  // else device arrays copied to them after the kernel
-  static constexpr bool reads_host_memory =
-      Kokkos::SpaceAccessibility<typename DeviceType::memory_space, Kokkos::HostSpace>::accessible;
+  // the extras: views of the CPU style's host arrays where DeviceType reads host memory, else
+  // device arrays copied to them after the kernel
   using ExtrasView = Kokkos::View<double **, Kokkos::LayoutRight, DeviceType>;
   ExtrasView d_friction, d_split;
   DupScatterView<double **, Kokkos::LayoutRight> dup_friction, dup_split;

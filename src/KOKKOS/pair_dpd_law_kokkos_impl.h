@@ -23,9 +23,8 @@ namespace LAMMPS_NS {
 
 template <class DeviceType, class Style>
 PairDPDLawKokkos<DeviceType, Style>::PairDPDLawKokkos(LAMMPS *lmp) :
-    Base(lmp), host_loop(false), neighflag(0), nlocal(0), eflag_global_kk(0), eflag_atom_kk(0),
-    vflag_global_kk(0), vflag_atom_kk(0), vflag_either_kk(0), special_lj_kk{1.0, 1.0, 1.0, 1.0},
-    timestep_kk(0), inv_sqrt_dt(0.0), need_dup(0)
+    Base(lmp), host_loop(false), neighflag(0), special_lj_kk{1.0, 1.0, 1.0, 1.0}, timestep_kk(0),
+    inv_sqrt_dt(0.0), need_dup(0)
 {
   this->kokkosable = 1;
   this->atomKK = (AtomKokkos *) this->atom;
@@ -79,7 +78,7 @@ template <class DeviceType, class Style>
 void PairDPDLawKokkos<DeviceType, Style>::copy_ziggurat_tables()
 {
   noise_kk = this->noise;
-  if constexpr (!device_is_host) {
+  if constexpr (!reads_host_memory) {
     using Tables = etd::ZigguratTables;
     const Tables host = Tables::host();
     constexpr int N = Tables::NORMAL_SIZE, E = Tables::EXPONENTIAL_SIZE;
@@ -172,12 +171,6 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
     this->memoryKK->create_kokkos(k_vatom, this->vatom, this->maxvatom, "pair:vatom");
     d_vatom = k_vatom.template view<DeviceType>();
   }
-  eflag_global_kk = this->eflag_global;
-  eflag_atom_kk = this->eflag_atom;
-  vflag_global_kk = this->vflag_global;
-  vflag_atom_kk = this->vflag_atom;
-  vflag_either_kk = this->vflag_either;
-
   this->atomKK->sync(this->execution_space,
                      X_MASK | V_MASK | F_MASK | TYPE_MASK | TAG_MASK | ENERGY_MASK | VIRIAL_MASK);
   x = this->atomKK->k_x.template view<DeviceType>();
@@ -188,7 +181,6 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
   k_cutsq.template sync<DeviceType>();
   k_params.template sync<DeviceType>();
   for (int k = 0; k < 4; k++) special_lj_kk[k] = this->force->special_lj[k];
-  nlocal = this->atom->nlocal;
   timestep_kk = this->update->ntimestep;
   inv_sqrt_dt = 1.0 / std::sqrt(this->update->dt);
 
@@ -440,10 +432,10 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::pair_loop(
           }
       }
       if (EVFLAG) {
-        const double evdwl =
-            (eflag_global_kk || eflag_atom_kk) ? Law::energy(c_ij, g.rsq, g.r, g.special) : 0.0;
-        if (eflag_global_kk) ev.evdwl += evdwl;
-        if (eflag_atom_kk || vflag_either_kk)
+        const bool energy = this->eflag_global || this->eflag_atom;
+        const double evdwl = energy ? Law::energy(c_ij, g.rsq, g.r, g.special) : 0.0;
+        if (this->eflag_global) ev.evdwl += evdwl;
+        if (this->eflag_atom || this->vflag_either)
           this->template ev_tally<NEIGHFLAG>(ev, i, j, evdwl, pair.fpair, g.del[0], g.del[1],
                                              g.del[2]);
       }
@@ -463,19 +455,19 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::ev_tally(
     EV_FLOAT &ev, int i, int j, double epair, double fpair, double delx, double dely,
     double delz) const
 {
-  if (eflag_atom_kk) {
+  if (this->eflag_atom) {
     auto v_eatom = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_eatom),
                                      decltype(ndup_eatom)>::get(dup_eatom, ndup_eatom);
     auto a_eatom = v_eatom.template access<AtomicDup_v<NEIGHFLAG, DeviceType>>();
     a_eatom[i] += 0.5 * epair;
     a_eatom[j] += 0.5 * epair;
   }
-  if (!vflag_either_kk) return;
+  if (!this->vflag_either) return;
   const double w[6] = {delx * delx * fpair, dely * dely * fpair, delz * delz * fpair,
                        delx * dely * fpair, delx * delz * fpair, dely * delz * fpair};
-  if (vflag_global_kk)
+  if (this->vflag_global)
     for (int k = 0; k < 6; k++) ev.v[k] += w[k];
-  if (vflag_atom_kk) {
+  if (this->vflag_atom) {
     auto v_vatom = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_vatom),
                                      decltype(ndup_vatom)>::get(dup_vatom, ndup_vatom);
     auto a_vatom = v_vatom.template access<AtomicDup_v<NEIGHFLAG, DeviceType>>();
