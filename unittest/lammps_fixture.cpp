@@ -16,8 +16,7 @@
 
 namespace etdtest {
 
-Lammps::Lammps(MPI_Comm comm_, bool load_plugin, const std::vector<std::string> &args) :
-    comm(comm_)
+Lammps::Lammps(MPI_Comm comm_, bool load_plugin, const std::vector<std::string> &args) : comm(comm_)
 {
   std::vector<std::string> words = {"etd_test", "-log", "none", "-screen", "none", "-nocite"};
   words.insert(words.end(), args.begin(), args.end());

@@ -10,12 +10,12 @@
 #include "atom_masks.h"
 #include "fix.h"
 #include "force.h"
+#include "lammps.h"
+#include "library.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair.h"
-#include "lammps.h"
-#include "library.h"
 
 #include <algorithm>
 #include <cmath>
@@ -80,7 +80,8 @@ Snapshot snapshot(Lammps &l)
 bool pair_ran_kernel(Lammps &l)
 {
   int kokkos_lists = 0;
-  for (int n = 0; n < l.lmp->neighbor->nlist; n++) kokkos_lists += l.lmp->neighbor->lists[n]->kokkos;
+  for (int n = 0; n < l.lmp->neighbor->nlist; n++)
+    kokkos_lists += l.lmp->neighbor->lists[n]->kokkos;
   return kokkos_lists > 0;
 }
 
@@ -144,12 +145,12 @@ TEST(KokkosStyles, TrajectoriesFollowTheCpuStyle)
     bool kernel;        // the pair loop runs in the Kokkos kernel (else on the host)
     bool fix_kernel;    // the integrator's step runs in Kokkos kernels (nve/kk, etd/kk)
   };
-  for (const Case &c :
-       {Case{"fix integrate all nve", 1.0, 0.01, true, true},
-        Case{"fix integrate all etd scheme diagonal", 0.01, 0.002, true, true},
-        // (order 2 is stable at this mass below dt = 0.0009: doc/fix_etd.rst)
-        Case{"fix integrate all etd scheme diagonal order 2 noise exact", 0.01, 0.0005, true, false},
-        Case{"fix integrate all etd scheme implicit", 0.01, 0.005, false, false}}) {
+  for (const Case &c : {Case{"fix integrate all nve", 1.0, 0.01, true, true},
+                        Case{"fix integrate all etd scheme diagonal", 0.01, 0.002, true, true},
+                        // (order 2 is stable at this mass below dt = 0.0009: doc/fix_etd.rst)
+                        Case{"fix integrate all etd scheme diagonal order 2 noise exact", 0.01,
+                             0.0005, true, false},
+                        Case{"fix integrate all etd scheme implicit", 0.01, 0.005, false, false}}) {
     for (const auto &pair : {GEN_S2, GEN_MIXED}) {
       const Pair p = run_both(pair, {c.fix, "run 50 post no"}, c.mass, c.dt);
       EXPECT_EQ(p.kernel, c.kernel) << c.fix;
@@ -190,8 +191,8 @@ TEST(KokkosStyles, ForceSplitEqualsTheCpuStyle)
     Lammps l(MPI_COMM_WORLD, true, kokkos ? kokkos_args() : std::vector<std::string>{});
     setup_box(l, 0.01, 0.002);
     l.cmds(GEN_MIXED);
-    l.cmds({"fix integrate all etd scheme diagonal", "compute split all dpd/split",
-            "run 10 post no"});
+    l.cmds(
+        {"fix integrate all etd scheme diagonal", "compute split all dpd/split", "run 10 post no"});
     split[kokkos] = l.gather_compute("split", 9);
     if (kokkos) EXPECT_TRUE(pair_ran_kernel(l));
   }
@@ -225,8 +226,8 @@ TEST(KokkosStyles, HoldsTemperatureAndPressureBesideLammpsDpdKokkos)
     press[stock] = l.fix_vector("average", 1);
   }
   if (etdtest::world_rank() == 0)
-    std::printf("dpd/gen/kk temp %.4f press %.3f; dpd/kk temp %.4f press %.3f\n", temp[0],
-                press[0], temp[1], press[1]);
+    std::printf("dpd/gen/kk temp %.4f press %.3f; dpd/kk temp %.4f press %.3f\n", temp[0], press[0],
+                temp[1], press[1]);
   EXPECT_NEAR(temp[0], 1.0, 0.015);
   EXPECT_NEAR(temp[0] / temp[1], 1.0, 0.02);
   EXPECT_NEAR(press[0] / press[1], 1.0, 0.01);
@@ -294,7 +295,9 @@ TEST(KokkosStyles, RestartContinuesTheRun)
 
 TEST(KokkosStyles, BadInputStopsWithAnError)
 {
-  const auto setup = [](Lammps &l) { setup_box(l); };
+  const auto setup = [](Lammps &l) {
+    setup_box(l);
+  };
   // the CPU style's own checks, through the /kk style
   etdtest::expect_errors(
       {{{"pair_style dpd/gen 1.0 1.0 123", "pair_coeff * * 25.0 -4.5 2.0"},
@@ -317,10 +320,10 @@ TEST(KokkosStyles, BadInputStopsWithAnError)
   for (const std::string neigh : {"full", "half"}) {
     std::vector<std::string> args = kokkos_args();
     args.insert(args.end(), {"-pk", "kokkos", "neigh", neigh, "newton", "off"});
-    etdtest::expect_errors({{{"pair_style dpd/gen 1.0 1.0 123", "pair_coeff * * 25.0 4.5 2.0",
-                              "run 0"},
-                             "Pair style dpd/gen/kk requires a half neighbor list and newton on"}},
-                           setup, args);
+    etdtest::expect_errors(
+        {{{"pair_style dpd/gen 1.0 1.0 123", "pair_coeff * * 25.0 4.5 2.0", "run 0"},
+          "Pair style dpd/gen/kk requires a half neighbor list and newton on"}},
+        setup, args);
   }
 }
 

@@ -9,8 +9,8 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -40,7 +40,8 @@ static std::set<std::pair<std::string, std::string>> documented_styles()
       const bool kokkos = second.size() > 3 && second.compare(second.size() - 3, 3, "/kk") == 0;
 #ifdef ETD_DPD_KOKKOS
       if (kokkos)
-        for (const char *variant : {"/device", "/host"}) styles.insert({category, second + variant});
+        for (const char *variant : {"/device", "/host"})
+          styles.insert({category, second + variant});
 #else
       if (kokkos) continue;
 #endif

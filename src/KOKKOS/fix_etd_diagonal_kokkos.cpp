@@ -51,8 +51,9 @@ template <class DeviceType> void FixETDDiagonalKokkos<DeviceType>::init()
   const std::string reason = host_reason();
   on_device = reason.empty();
   if (!on_device && comm->me == 0)
-    error->warning(FLERR, "Fix etd/kk: the step runs on the host with {} (the CPU fix's step, same results)",
-                   reason);
+    error->warning(
+        FLERR, "Fix etd/kk: the step runs on the host with {} (the CPU fix's step, same results)",
+        reason);
   execution_space = on_device ? ExecutionSpaceFromDevice<DeviceType>::space : Host;
   datamask_read = on_device ? DEVICE_READ : ALL_MASK;
   datamask_modify = on_device ? DEVICE_MODIFY : ALL_MASK;
@@ -131,7 +132,8 @@ template <class DeviceType> void FixETDDiagonalKokkos<DeviceType>::final_integra
         if (!(mask(i) & bit)) return;
         const double inv_m = 1.0 / (per_atom_mass ? rmass(i) : mass(type(i)));
         for (int k = 0; k < 3; k++)
-          v(i, k) += etd::first_order_effective_step(friction(i, k) * inv_m, step) * f(i, k) * inv_m;
+          v(i, k) +=
+              etd::first_order_effective_step(friction(i, k) * inv_m, step) * f(i, k) * inv_m;
       });
   atomKK->modified(execution_space, V_MASK);
 }

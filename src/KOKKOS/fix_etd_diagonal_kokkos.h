@@ -25,7 +25,8 @@ template <class DeviceType> class FixETDDiagonalKokkos : public FixETDDiagonal {
   void final_integrate() override;
 
  private:
-  bool on_device = false;    // this run's step runs in the kernels (else the CPU fix's, on the host)
+  bool on_device =
+      false;    // this run's step runs in the kernels (else the CPU fix's, on the host)
   std::string host_reason() const;    // why not ("" where it can)
   // the pair style's friction diagonal where DeviceType reads it
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> friction_on_device(int nlocal);
@@ -33,7 +34,8 @@ template <class DeviceType> class FixETDDiagonalKokkos : public FixETDDiagonal {
 };
 
 // Registers fix etd/kk, etd/kk/device and etd/kk/host with LAMMPS.
-void register_fix_etd_kokkos(lammpsplugin_t plugin, lammpsplugin_regfunc register_plugin, void *lmp);
+void register_fix_etd_kokkos(lammpsplugin_t plugin, lammpsplugin_regfunc register_plugin,
+                             void *lmp);
 
 }    // namespace LAMMPS_NS
 

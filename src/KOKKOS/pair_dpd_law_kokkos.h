@@ -55,7 +55,8 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   void request_newton_off_list() override;
 
   // FRICTION, SPLIT: the kernel also sums the diagonal friction, the force split
-  template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT> struct TagPairLaw {};
+  template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT> struct TagPairLaw {
+  };
   template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT>
   KOKKOS_INLINE_FUNCTION void operator()(TagPairLaw<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>,
                                          const int &ii) const;
@@ -74,7 +75,8 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   bool host_loop;    // this run is served by the CPU loop (see the header)
   int neighflag;
   double special_lj_kk[4];
-  etd::PairNoise noise_kk;    // the style's noise, with the ziggurat's tables in DeviceType's memory
+  etd::PairNoise
+      noise_kk;    // the style's noise, with the ziggurat's tables in DeviceType's memory
   Kokkos::View<double *, DeviceType> d_ziggurat_tables;
   bigint timestep_kk;
   double inv_sqrt_dt;

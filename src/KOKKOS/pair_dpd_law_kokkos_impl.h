@@ -192,8 +192,10 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
   need_dup = this->lmp->kokkos->template need_dup<DeviceType>();
   if (need_dup) {
     keep_duplicated(dup_f, f);
-    dup_eatom = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(d_eatom);
-    dup_vatom = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(d_vatom);
+    dup_eatom =
+        Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(d_eatom);
+    dup_vatom =
+        Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterDuplicated>(d_vatom);
   } else {
     ndup_f = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterNonDuplicated>(f);
     ndup_eatom =
@@ -264,7 +266,8 @@ void PairDPDLawKokkos<DeviceType, Style>::extras_to_device(bool extras)
   } else {
     ndup_friction =
         Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterNonDuplicated>(d_friction);
-    ndup_split = Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterNonDuplicated>(d_split);
+    ndup_split =
+        Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterNonDuplicated>(d_split);
   }
 }
 
@@ -315,8 +318,9 @@ void PairDPDLawKokkos<DeviceType, Style>::launch_with(int inum, EV_FLOAT &ev)
 
 template <class DeviceType, class Style>
 template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT>
-KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
-    TagPairLaw<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>, const int &ii) const
+KOKKOS_INLINE_FUNCTION void
+PairDPDLawKokkos<DeviceType, Style>::operator()(TagPairLaw<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>,
+                                                const int &ii) const
 {
   EV_FLOAT ev;
   this->template operator()<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>(
@@ -328,8 +332,9 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
 // every atom but unused, they cost the kernel its gain from a second thread.
 template <class DeviceType, class Style>
 template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT>
-KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
-    TagPairLaw<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>, const int &ii, EV_FLOAT &ev) const
+KOKKOS_INLINE_FUNCTION void
+PairDPDLawKokkos<DeviceType, Style>::operator()(TagPairLaw<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>,
+                                                const int &ii, EV_FLOAT &ev) const
 {
   using Dup = NeedDup_v<NEIGHFLAG, DeviceType>;
   using Atomic = AtomicDup_v<NEIGHFLAG, DeviceType>;
@@ -338,8 +343,8 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
   int none = 0;
   const auto with_split = [&](auto &a_friction) {
     if constexpr (SPLIT != 0) {
-      auto v_split =
-          ScatterViewHelper<Dup, decltype(dup_split), decltype(ndup_split)>::get(dup_split, ndup_split);
+      auto v_split = ScatterViewHelper<Dup, decltype(dup_split), decltype(ndup_split)>::get(
+          dup_split, ndup_split);
       auto a_split = v_split.template access<Atomic>();
       pair_loop<NEIGHFLAG, EVFLAG, FRICTION, SPLIT>(ii, ev, a_f, a_friction, a_split);
     } else {
@@ -361,8 +366,9 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::operator()(
 template <class DeviceType, class Style>
 template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT, class Forces, class Friction,
           class Split>
-KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::pair_loop(
-    const int ii, EV_FLOAT &ev, Forces &a_f, Friction &a_friction, Split &a_split) const
+KOKKOS_INLINE_FUNCTION void
+PairDPDLawKokkos<DeviceType, Style>::pair_loop(const int ii, EV_FLOAT &ev, Forces &a_f,
+                                               Friction &a_friction, Split &a_split) const
 {
   const int i = d_ilist[ii];
   const double xi[3] = {x(i, 0), x(i, 1), x(i, 2)};
@@ -371,7 +377,7 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::pair_loop(
   const tagint tagi = tag(i);
   const etd::PairStep step{noise_kk, timestep_kk, inv_sqrt_dt};
   double fi[3] = {0.0, 0.0, 0.0};
-  double gi[3] = {0.0, 0.0, 0.0};                                // i's diagonal friction
+  double gi[3] = {0.0, 0.0, 0.0};    // i's diagonal friction
   double si[Base::FORCE_SPLIT_VALUES] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 
   // as in the CPU loop (close_neighbors.h): the neighbours within the cutoff are gathered
@@ -451,9 +457,10 @@ KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::pair_loop(
 // Per-atom energy (half to each of i and j) and the virial of a central pair force.
 template <class DeviceType, class Style>
 template <int NEIGHFLAG>
-KOKKOS_INLINE_FUNCTION void PairDPDLawKokkos<DeviceType, Style>::ev_tally(
-    EV_FLOAT &ev, int i, int j, double epair, double fpair, double delx, double dely,
-    double delz) const
+KOKKOS_INLINE_FUNCTION void
+PairDPDLawKokkos<DeviceType, Style>::ev_tally(EV_FLOAT &ev, int i, int j, double epair,
+                                              double fpair, double delx, double dely,
+                                              double delz) const
 {
   if (this->eflag_atom) {
     auto v_eatom = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_eatom),

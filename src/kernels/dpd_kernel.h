@@ -111,7 +111,7 @@ struct DissipativeWeights {
 };
 
 ETD_HOST_DEVICE inline DissipativeWeights dissipative_weights(double q, PowerKind dissipative_kind,
-                                              PowerKind random_kind, double s)
+                                                              PowerKind random_kind, double s)
 {
   DissipativeWeights w;
   w.random = power_of(q, random_kind, 0.5 * s);
@@ -128,7 +128,8 @@ struct PairDissipation {
   double noise = 0.0;
 };
 
-ETD_HOST_DEVICE inline PairDissipation pair_dissipation(const PairCoefficients &c, double r, double special = 1.0)
+ETD_HOST_DEVICE inline PairDissipation pair_dissipation(const PairCoefficients &c, double r,
+                                                        double special = 1.0)
 {
   const double q = 1.0 - r * c.inv_rc_d;
   const DissipativeWeights w = dissipative_weights(q, c.dissipative_kind, c.random_kind, c.s);
@@ -149,7 +150,7 @@ struct PairForce {
 
 // special a (1 - r/rc_C)^p inside rc_C, zero outside: the conservative force along e.
 ETD_HOST_DEVICE inline double dpd_conservative(const PairCoefficients &c, double rsq, double r,
-                               double special = 1.0)
+                                               double special = 1.0)
 {
   if (rsq >= c.rcsq_c) return 0.0;
   const double q = 1.0 - r * c.inv_rc_c;
@@ -159,8 +160,9 @@ ETD_HOST_DEVICE inline double dpd_conservative(const PairCoefficients &c, double
 // r: distance, e_dot_v: (e . v_ij), theta: unit Gaussian, inv_sqrt_dt: 1/sqrt(dt),
 // special: special-bond factor (dissipative scales by it, random by its root), conservative:
 // the conservative force along e (a law other than dpd_conservative may supply its own).
-ETD_HOST_DEVICE inline PairForce pair_force(const PairCoefficients &c, double rsq, double r, double e_dot_v,
-                            double theta, double inv_sqrt_dt, double special, double conservative)
+ETD_HOST_DEVICE inline PairForce pair_force(const PairCoefficients &c, double rsq, double r,
+                                            double e_dot_v, double theta, double inv_sqrt_dt,
+                                            double special, double conservative)
 {
   PairForce out;
   out.conservative = conservative;
@@ -173,14 +175,16 @@ ETD_HOST_DEVICE inline PairForce pair_force(const PairCoefficients &c, double rs
   return out;
 }
 
-ETD_HOST_DEVICE inline PairForce pair_force(const PairCoefficients &c, double rsq, double r, double e_dot_v,
-                            double theta, double inv_sqrt_dt, double special = 1.0)
+ETD_HOST_DEVICE inline PairForce pair_force(const PairCoefficients &c, double rsq, double r,
+                                            double e_dot_v, double theta, double inv_sqrt_dt,
+                                            double special = 1.0)
 {
   return pair_force(c, rsq, r, e_dot_v, theta, inv_sqrt_dt, special,
                     dpd_conservative(c, rsq, r, special));
 }
 
-ETD_HOST_DEVICE inline double pair_energy(const PairCoefficients &c, double rsq, double r, double special = 1.0)
+ETD_HOST_DEVICE inline double pair_energy(const PairCoefficients &c, double rsq, double r,
+                                          double special = 1.0)
 {
   if (rsq >= c.rcsq_c) return 0.0;
   const double q = 1.0 - r * c.inv_rc_c;

@@ -71,7 +71,8 @@ class PairNoise {
   // (normal_ziggurat.h draws what it draws) needs one 64-bit word almost always (no log, no
   // sine), so a single Philox block serves the pair; the rare further words come from the
   // following blocks. The draw stays a pure function of (seed, stream, pair, timestep).
-  ETD_HOST_DEVICE double gaussian(std::int64_t tag_i, std::int64_t tag_j, std::int64_t timestep) const
+  ETD_HOST_DEVICE double gaussian(std::int64_t tag_i, std::int64_t tag_j,
+                                  std::int64_t timestep) const
   {
     const std::uint64_t lo = static_cast<std::uint64_t>(tag_i < tag_j ? tag_i : tag_j);
     const std::uint64_t hi = static_cast<std::uint64_t>(tag_i < tag_j ? tag_j : tag_i);
@@ -87,7 +88,8 @@ class PairNoise {
   // 56): IDs below 2^32, timesteps below 2^48 and groups below 256 fit; anything else (LAMMPS
   // built with 64-bit IDs and more than 4e9 atoms) takes Philox4x64, whose counter has a word
   // for each. Either way a draw is a pure function of its arguments.
-  ETD_HOST_DEVICE static bool packs(std::uint64_t larger_id, std::int64_t timestep, std::uint64_t group)
+  ETD_HOST_DEVICE static bool packs(std::uint64_t larger_id, std::int64_t timestep,
+                                    std::uint64_t group)
   {
     return (larger_id >> 32) == 0 && timestep >= 0 && (timestep >> 48) == 0 && group < 256;
   }
@@ -102,8 +104,10 @@ class PairNoise {
   class ScalarEngine {
    public:
     using result_type = std::uint64_t;
-    ETD_HOST_DEVICE ScalarEngine(const ScalarGenerator::key_type &key, std::uint64_t pair, std::uint64_t timestep) :
-        key_(key), counter_{{pair, timestep}}
+    ETD_HOST_DEVICE ScalarEngine(const ScalarGenerator::key_type &key, std::uint64_t pair,
+                                 std::uint64_t timestep) :
+        key_(key),
+        counter_{{pair, timestep}}
     {
     }
     ETD_HOST_DEVICE static constexpr result_type min() { return 0; }
@@ -131,7 +135,7 @@ class PairNoise {
    public:
     using result_type = std::uint64_t;
     ETD_HOST_DEVICE BlockEngine(const PairNoise &noise, std::int64_t tag_i, std::int64_t tag_j,
-                std::int64_t timestep, std::uint64_t first_block = 0) :
+                                std::int64_t timestep, std::uint64_t first_block = 0) :
         noise_(noise),
         tag_i_(tag_i), tag_j_(tag_j), timestep_(timestep), block_(first_block)
     {
@@ -156,8 +160,8 @@ class PairNoise {
   };
 
  private:
-  ETD_HOST_DEVICE Generator::ctr_type draw(std::int64_t tag_i, std::int64_t tag_j, std::int64_t timestep,
-                           std::uint64_t block) const
+  ETD_HOST_DEVICE Generator::ctr_type draw(std::int64_t tag_i, std::int64_t tag_j,
+                                           std::int64_t timestep, std::uint64_t block) const
   {
     const std::uint64_t lo = static_cast<std::uint64_t>(tag_i < tag_j ? tag_i : tag_j);
     const std::uint64_t hi = static_cast<std::uint64_t>(tag_i < tag_j ? tag_j : tag_i);

@@ -45,71 +45,71 @@ struct ZigguratTables {
 
 namespace ziggurat {
 
-// a * b rounded on its own, never fused with a following addition
-ETD_HOST_DEVICE inline double mul(double a, double b)
-{
+  // a * b rounded on its own, never fused with a following addition
+  ETD_HOST_DEVICE inline double mul(double a, double b)
+  {
 #if defined(__CUDA_ARCH__)
-  return __dmul_rn(a, b);
+    return __dmul_rn(a, b);
 #else
-  return a * b;
+    return a * b;
 #endif
-}
-
-// Boost's generate_int_float_pair<double, 8> for a full-range 64-bit engine: the low byte of
-// one word is the layer (with the sign, for the normal), its upper 56 bits scaled to [0, 1) the
-// abscissa, after Boost's bookkeeping of spare bits has cleared bit 11.
-template <class Engine> ETD_HOST_DEVICE inline double int_float_pair(Engine &words, int &layer)
-{
-  std::uint64_t u = words();
-  layer = static_cast<int>(u & 0xffu);
-  u &= ~(std::uint64_t(1) << 11);
-  return static_cast<double>(u >> 8) * (1.0 / 72057594037927936.0);    // 2^-56
-}
-
-// Boost's uniform_01<double> on a 64-bit engine: a word times 2^-64, drawn again if that rounds
-// to 1.
-template <class Engine> ETD_HOST_DEVICE inline double uniform01(Engine &words)
-{
-  for (;;) {
-    const double r = static_cast<double>(words()) * (1.0 / 18446744073709551616.0);    // 2^-64
-    if (r < 1.0) return r;
   }
-}
 
-// Boost's unit_exponential_distribution<double>.
-template <class Engine>
-ETD_HOST_DEVICE inline double unit_exponential(Engine &words, const ZigguratTables &t)
-{
-  const double *tx = t.exponential_x, *ty = t.exponential_y;
-  double shift = 0.0;
-  for (;;) {
-    int i;
-    const double abscissa = int_float_pair(words, i);    // sets i first
-    const double x = abscissa * tx[i];
-    if (x < tx[i + 1]) return shift + x;
-    if (i == 0) {
-      shift += tx[1];    // the tail of an exponential is the body again, shifted
-    } else {
-      const double y01 = uniform01(words);
-      const double y = ty[i] + mul(y01, ty[i + 1] - ty[i]);
-      const double above_upper = mul(tx[i] - tx[i + 1], y01) - (tx[i] - x);
-      const double above_lower = y - (ty[i + 1] + mul(tx[i + 1] - x, ty[i + 1]));
-      if (above_upper < 0 && (above_lower < 0 || y < std::exp(-x))) return x + shift;
+  // Boost's generate_int_float_pair<double, 8> for a full-range 64-bit engine: the low byte of
+  // one word is the layer (with the sign, for the normal), its upper 56 bits scaled to [0, 1) the
+  // abscissa, after Boost's bookkeeping of spare bits has cleared bit 11.
+  template <class Engine> ETD_HOST_DEVICE inline double int_float_pair(Engine &words, int &layer)
+  {
+    std::uint64_t u = words();
+    layer = static_cast<int>(u & 0xffu);
+    u &= ~(std::uint64_t(1) << 11);
+    return static_cast<double>(u >> 8) * (1.0 / 72057594037927936.0);    // 2^-56
+  }
+
+  // Boost's uniform_01<double> on a 64-bit engine: a word times 2^-64, drawn again if that rounds
+  // to 1.
+  template <class Engine> ETD_HOST_DEVICE inline double uniform01(Engine &words)
+  {
+    for (;;) {
+      const double r = static_cast<double>(words()) * (1.0 / 18446744073709551616.0);    // 2^-64
+      if (r < 1.0) return r;
     }
   }
-}
 
-// Boost's normal tail beyond the first layer: rejection from an exponential shifted there.
-template <class Engine>
-ETD_HOST_DEVICE inline double normal_tail(Engine &words, const ZigguratTables &t)
-{
-  const double tail_start = t.normal_x[1];
-  for (;;) {
-    const double x = unit_exponential(words, t) / tail_start;
-    const double y = unit_exponential(words, t) / 1.0;
-    if (2 * y > mul(x, x)) return x + tail_start;
+  // Boost's unit_exponential_distribution<double>.
+  template <class Engine>
+  ETD_HOST_DEVICE inline double unit_exponential(Engine &words, const ZigguratTables &t)
+  {
+    const double *tx = t.exponential_x, *ty = t.exponential_y;
+    double shift = 0.0;
+    for (;;) {
+      int i;
+      const double abscissa = int_float_pair(words, i);    // sets i first
+      const double x = abscissa * tx[i];
+      if (x < tx[i + 1]) return shift + x;
+      if (i == 0) {
+        shift += tx[1];    // the tail of an exponential is the body again, shifted
+      } else {
+        const double y01 = uniform01(words);
+        const double y = ty[i] + mul(y01, ty[i + 1] - ty[i]);
+        const double above_upper = mul(tx[i] - tx[i + 1], y01) - (tx[i] - x);
+        const double above_lower = y - (ty[i + 1] + mul(tx[i + 1] - x, ty[i + 1]));
+        if (above_upper < 0 && (above_lower < 0 || y < std::exp(-x))) return x + shift;
+      }
+    }
   }
-}
+
+  // Boost's normal tail beyond the first layer: rejection from an exponential shifted there.
+  template <class Engine>
+  ETD_HOST_DEVICE inline double normal_tail(Engine &words, const ZigguratTables &t)
+  {
+    const double tail_start = t.normal_x[1];
+    for (;;) {
+      const double x = unit_exponential(words, t) / tail_start;
+      const double y = unit_exponential(words, t) / 1.0;
+      if (2 * y > mul(x, x)) return x + tail_start;
+    }
+  }
 
 }    // namespace ziggurat
 

@@ -79,11 +79,13 @@ struct PairStep {
 
 // DPD's conservative force a (1 - r/rc_C)^p with energy a rc_C/(p+1) (1 - r/rc_C)^(p+1).
 struct PowerConservative {
-  ETD_HOST_DEVICE static double force(const PairCoefficients &c, double rsq, double r, double special)
+  ETD_HOST_DEVICE static double force(const PairCoefficients &c, double rsq, double r,
+                                      double special)
   {
     return dpd_conservative(c, rsq, r, special);
   }
-  ETD_HOST_DEVICE static double energy(const PairCoefficients &c, double rsq, double r, double special)
+  ETD_HOST_DEVICE static double energy(const PairCoefficients &c, double rsq, double r,
+                                       double special)
   {
     return pair_energy(c, rsq, r, special);
   }
@@ -135,7 +137,8 @@ template <class Conservative> class CentralDpdLaw {
       for (int k = 0; k < 3; k++) parts[p][k] = magnitude[p] * e[k];
   }
 
-  ETD_HOST_DEVICE static double conservative(const Coefficients &c, double rsq, double r, double special)
+  ETD_HOST_DEVICE static double conservative(const Coefficients &c, double rsq, double r,
+                                             double special)
   {
     return Conservative::force(c, rsq, r, special);
   }
