@@ -163,6 +163,30 @@ TEST(KokkosStyles, TrajectoriesFollowTheCpuStyle)
   }
 }
 
+// A sheared box (triclinic, fix deform ... remap v): the ghosts' velocities carry the shear, in
+// the Kokkos communication as in the CPU one
+TEST(KokkosStyles, ShearedBoxFollowsTheCpuStyle)
+{
+  struct Case {
+    std::string fix;
+    double mass, dt;
+  };
+  for (const Case &c :
+       {Case{"fix integrate all nve", 1.0, 0.01}, Case{"fix integrate all etd", 0.01, 0.002}}) {
+    std::vector<double> v[2];
+    for (bool kokkos : {false, true}) {
+      Lammps l(MPI_COMM_WORLD, true, kokkos ? kokkos_args() : std::vector<std::string>{});
+      setup_box(l, c.mass, c.dt);
+      l.cmds({"change_box all triclinic", "pair_style dpd/gen 1.0 1.0 123",
+              "pair_coeff * * 25.0 4.5 2.0", c.fix, "fix shear all deform 1 xy erate 0.5 remap v",
+              "run 50 post no"});
+      if (kokkos) EXPECT_TRUE(pair_ran_kernel(l)) << c.fix;
+      v[kokkos] = l.gather("v");
+    }
+    EXPECT_LT(max_rel_diff(v[1], v[0]), 1e-8) << c.fix;
+  }
+}
+
 // dpd/gen/kk as a sub-style of hybrid/overlay (hybrid/overlay/kk) beside soft/kk
 TEST(KokkosStyles, HybridOverlayFollowsTheCpuStyle)
 {
