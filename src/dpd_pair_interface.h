@@ -12,6 +12,19 @@ namespace etd {
 
 struct PairCoefficients;
 struct FpmCoefficients;
+struct PairListView;    // solver/cell_pair_search.h
+
+// Pairs found by an integrator for the positions of the current step (fix etd scheme
+// implicit's own search), which a pair style can read instead of its LAMMPS list.
+class ExternalPairs {
+ public:
+  // the pairs for this step, or nullptr where there are none (a minimization, a rerun, or
+  // before the integrator's first search of a run)
+  virtual const PairListView *pairs_for_step(std::int64_t step) const = 0;
+
+ protected:
+  ~ExternalPairs() = default;
+};
 
 // Per-atom extras a pair style accumulates during compute() on request (owned atoms complete,
 // ghost contributions already reverse-communicated):
@@ -44,6 +57,11 @@ class DpdPairInterface {
   // list made newton off for this run (its forces then stay on owned atoms and its virial is
   // summed pair by pair), so that LAMMPS builds one list for both.
   virtual void request_newton_off_list() {}
+  // Where the scheme searches the pairs itself: the style's list is made occasional for this
+  // run (LAMMPS no longer builds it at each reneighboring), and compute() reads the scheme's
+  // pairs, or builds that list itself at a step where the scheme has none. Styles that cannot
+  // return false.
+  virtual bool use_external_pairs(const ExternalPairs * /*source*/) { return false; }
 
  protected:
   // never deleted through this interface; non-virtual so that it does not constrain the

@@ -87,7 +87,8 @@ FixETDImplicit::~FixETDImplicit()
 
 int FixETDImplicit::setmask()
 {
-  return INITIAL_INTEGRATE | POST_INTEGRATE | FINAL_INTEGRATE | POST_NEIGHBOR | POST_RUN;
+  return INITIAL_INTEGRATE | POST_INTEGRATE | PRE_FORCE | FINAL_INTEGRATE | POST_NEIGHBOR |
+      POST_RUN;
 }
 
 void FixETDImplicit::init()
@@ -177,19 +178,35 @@ void FixETDImplicit::check_rotation()
 
 void FixETDImplicit::request_neighbor_list()
 {
-  // On several ranks the list is newton off, so that a pair crossing ranks is held by both
-  // (partner_exchange.h); on one rank there is no such pair, and the default list is a free
-  // copy of the pair style's where the newton settings agree.
+  // On several ranks the lists are newton off, so that a pair crossing ranks is held by both
+  // (partner_exchange.h); on one rank there is no such pair.
   const bool several_ranks = comm->nprocs > 1;
-  // With newton on, this newton-off list would be a second list, built at every reneighboring
-  // beside the pair style's newton-on one (measured: it doubled the neighbor time of a 2-rank
-  // step). A lone style (not in hybrid) makes its own list newton off instead, and LAMMPS then
-  // hands this fix a copy of it.
-  if (several_ranks && force->newton_pair && dpd_styles.size() == 1 &&
-      dynamic_cast<etd::DpdPairInterface *>(force->pair) == dpd_styles.front())
-    dpd_styles.front()->request_newton_off_list();
-  etd::compat::request_fix_half_list(neighbor, this, instance_me, several_ranks);
   list_newton_off = several_ranks || !force->newton_pair;
+  const bool lone_style = dpd_styles.size() == 1 &&
+      dynamic_cast<etd::DpdPairInterface *>(force->pair) == dpd_styles.front();
+  // With newton on, a newton-off list of this fix would be a second list, built at every
+  // reneighboring beside the pair style's newton-on one (measured: it doubled the neighbor time
+  // of a 2-rank step). A lone style (not in hybrid) makes its own list newton off instead, and
+  // LAMMPS then hands this fix a copy of it; with the scheme's own search, the style reads that
+  // search's pairs, with the same newton setting.
+  if (several_ranks && force->newton_pair && lone_style)
+    dpd_styles.front()->request_newton_off_list();
+  own.active = false;
+  own.step = -1;
+  if (options.pair_search != etd::ImplicitOptions::PairSearch::lammps) {
+    const char *unsupported = own_pairs_unsupported();
+    if (unsupported && options.pair_search == etd::ImplicitOptions::PairSearch::own)
+      error->all(FLERR,
+                 "Fix etd neighbors own is not supported with {}: use neighbors lammps (or leave "
+                 "the keyword out)",
+                 unsupported);
+    own.active = !unsupported && dpd_styles.front()->use_external_pairs(this);
+  }
+  if (own.active) {
+    list = nullptr;    // no LAMMPS list for the fix: it searches the pairs itself
+    return;
+  }
+  etd::compat::request_fix_half_list(neighbor, this, instance_me, several_ranks);
 }
 
 void FixETDImplicit::init_list(int, NeighList *ptr)
@@ -216,6 +233,7 @@ void FixETDImplicit::post_neighbor()
 }
 void FixETDImplicit::post_run()
 {
+  own.step = -1;    // the pair style finds its own pairs outside runs (minimize, rerun)
   neighbor_safety.end_run(lmp, id);
 }
 
@@ -331,41 +349,6 @@ void FixETDImplicit::post_integrate()
     for (int k = 0; k < 3; k++) lead[3 * i + k] = 0.5 * dt * (v[i][k] + kick * f[i][k]);
   }
   if (neighbor_safety.could_outrun(lmp, groupbit, lead)) next_reneighbor = update->ntimestep;
-}
-
-/* ---- the pair geometry of this step ---------------------------------------------------- */
-
-void FixETDImplicit::build_pairs()
-{
-  if (!partners.current(neighbor->ncalls)) partners.find(lmp, this, list, ghosts);
-  const etd::FrictionPairAssembly::Context context{list, &partners, groupbit, list_newton_off,
-                                                   update->ntimestep};
-  check_missing_pairs(assembly.build(lmp, context));
-}
-
-// One reduction: whether a pair has an atom outside the group, and how far atoms are from where
-// the list was built (this friction step's positions were not checked by LAMMPS); where two
-// displacements add up to more than the skin, whether a pair is in fact missing.
-void FixETDImplicit::check_missing_pairs(bool local_fixed_partner)
-{
-  double local[3] = {local_fixed_partner ? 1.0 : 0.0}, global[3];
-  neighbor_safety.largest_displacements(lmp, groupbit, local + 1);
-  etd::NeighborSafety::reduce_with_flag(local, global, world);
-  any_fixed_partner = global[0] > 0.0;
-  if (global[1] + global[2] <= neighbor->skin) return;
-  auto friction_cutoff = [this](int itype, int jtype) {
-    return assembly.friction_cutoff(itype, jtype);
-  };
-  const long missed = neighbor_safety.missed_pairs(lmp, groupbit, global + 1, friction_cutoff);
-  if (missed > 0)
-    error->all(FLERR,
-               "Fix {}: {} pair(s) within the friction cutoff missing from the neighbor list "
-               "at step {}: atoms moved up to {:.3g} since it was built, and two of them {:.3g} "
-               "together, more than the skin {}; use a larger skin (neighbor command; at least "
-               "{:.2g} here) or a smaller timestep",
-               id, missed, update->ntimestep, global[1], global[1] + global[2], neighbor->skin,
-               1.2 * (global[1] + global[2]));
-  if (missed < 0) neighbor_safety.count_if_outrun(lmp, global + 1);
 }
 
 // gu = G u over owned atoms (u given on owned atoms; the remote partners are filled here). With

@@ -5,6 +5,8 @@
 
 #include "fix.h"
 
+#include "cell_pair_search.h"
+
 #include "dpd_pair_interface.h"
 #include "fix_etd_options.h"
 #include "friction_solve.h"
@@ -16,7 +18,7 @@
 
 namespace LAMMPS_NS {
 
-class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
+class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator, public etd::ExternalPairs {
  public:
   FixETDImplicit(class LAMMPS *, int, char **);
   ~FixETDImplicit() override;
@@ -27,6 +29,8 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
   void setup_post_neighbor() override;
   void post_neighbor() override;
   void post_integrate() override;
+  void setup_pre_force(int) override;
+  void pre_force(int) override;
   void post_run() override;
   void initial_integrate(int) override;
   void final_integrate() override;
@@ -50,11 +54,34 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator {
   void request_split() override { split_requested = true; }
   double **dissipative_random_split() const override { return split; }
 
+  // The pairs the scheme found at this step's end positions, which the pair style reads in
+  // place of its LAMMPS list (nullptr without the scheme's own search, or at another step)
+  const etd::PairListView *pairs_for_step(std::int64_t step) const override
+  {
+    return (own.active && step == own.step) ? &own.view : nullptr;
+  }
+
  private:
   etd::ImplicitOptions options;
   double dt;
-  class NeighList *list;
-  bool list_newton_off;    // each image pair is listed from both ends
+  class NeighList *list;    // LAMMPS's, where the scheme does not search the pairs itself
+  bool list_newton_off;     // each image pair is listed from both ends
+  // The scheme's own pair search (fix_etd_implicit_pairs.cpp): once per step at the end
+  // positions, for the pair style's forces and, with a margin for the half drift to come, for
+  // the next friction step; again at the friction step's positions where atoms moved farther.
+  struct OwnPairs {
+    bool active = false;
+    etd::CellPairSearch search;
+    etd::PairListView view;
+    bigint step = -1;                 // the step whose pairs these are (-1: none)
+    std::vector<double> positions;    // the owned atoms' positions at the search
+    double cutoff = 0.0;              // the largest cutoff of the pair style and the friction
+    double margin = 0.0;              // searched out to cutoff + margin
+  } own;
+  const char *own_pairs_unsupported() const;
+  void search_own_pairs(double margin);
+  void refresh_own_pairs();
+  etd::PairListView step_pairs() const;    // own.view, or LAMMPS's list
   std::vector<etd::DpdPairInterface *> dpd_styles;
   etd::FrictionPairAssembly assembly;    // this step's pairs (implicit_pair_assembly.h)
   int dofs;    // unknowns per atom: 3 (v), or 6 (v and Omega) when dpd/fpm pairs take part

@@ -63,6 +63,10 @@ ImplicitOptions parse_implicit_options(LAMMPS *lmp, int narg, char **arg)
       options.midpoint = fix_etd_choice(lmp, key, value, {"yes", "no"}) == 0;
     } else if (key == "start") {
       options.warm_start = fix_etd_choice(lmp, key, value, {"velocity", "jacobi"}) == 0;
+    } else if (key == "neighbors") {
+      options.pair_search = fix_etd_choice(lmp, key, value, {"own", "lammps"}) == 0
+          ? ImplicitOptions::PairSearch::own
+          : ImplicitOptions::PairSearch::lammps;
     } else if (key == "maxiter") {
       options.max_iterations = utils::inumeric(FLERR, value.c_str(), false, lmp);
       if (options.max_iterations < 1)

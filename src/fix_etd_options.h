@@ -31,6 +31,10 @@ struct ImplicitOptions {
   bool warm_start = false;    // CG starts from the old velocities (else block-Jacobi)
   double tolerance = 1e-6;
   int max_iterations = 200;
+  // where each step's pairs come from: the scheme's own search where the set-up allows it
+  // (automatic), required (own), or LAMMPS's neighbor lists (lammps)
+  enum class PairSearch { automatic, own, lammps };
+  PairSearch pair_search = PairSearch::automatic;
 };
 ImplicitOptions parse_implicit_options(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg);
 

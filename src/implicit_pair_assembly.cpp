@@ -72,6 +72,11 @@ double FrictionPairAssembly::friction_cutoff(int itype, int jtype) const
   return fc ? fc->rc : 0.0;
 }
 
+double FrictionPairAssembly::friction_cutoff_max() const
+{
+  return std::sqrt(friction_cutsq_max_);
+}
+
 void FrictionPairAssembly::clear(bool moving_images, int nlocal)
 {
   pairs_.clear();
@@ -112,7 +117,7 @@ ETD_PAIR_INLINE void FrictionPairAssembly::add_dpd_pair(const PairCoefficients &
 bool FrictionPairAssembly::build(LAMMPS *lmp, const Context &context)
 {
   Atom *atom = lmp->atom;
-  NeighList *list = context.list;
+  const PairListView &list = context.list;
   const int *type = atom->type;
   const int *mask = atom->mask;
   const tagint *tag = atom->tag;
@@ -131,14 +136,14 @@ bool FrictionPairAssembly::build(LAMMPS *lmp, const Context &context)
   };
   bool fixed_partner = false;
   const double *xflat = nlocal + atom->nghost > 0 ? atom->x[0] : nullptr;    // rows at 3 j
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
+  for (int ii = 0; ii < list.inum; ii++) {
+    const int i = list.ilist[ii];
     const bool i_mobile = mask[i] & groupbit;
     const double xi0 = xflat[3 * i], xi1 = xflat[3 * i + 1], xi2 = xflat[3 * i + 2];
     // about half of the list lies in its skin: rejected by distance alone, before any of the
     // per-pair lookups below (close_neighbors.h)
     const int nclose = gather_close_neighbors(
-        list->firstneigh[i], list->numneigh[i], NEIGHMASK, xflat, xi0, xi1, xi2,
+        list.firstneigh[i], list.numneigh[i], NEIGHMASK, xflat, xi0, xi1, xi2,
         [&](int, double rsq) {
           return rsq < friction_cutsq_max_;
         },

@@ -4,6 +4,7 @@
 #ifndef ETD_IMPLICIT_PAIR_ASSEMBLY_H
 #define ETD_IMPLICIT_PAIR_ASSEMBLY_H
 
+#include "cell_pair_search.h"
 #include "dpd_pair_interface.h"
 #include "dpd_random.h"
 #include "friction_operator.h"
@@ -13,10 +14,6 @@
 #include <cstdint>
 #include <utility>
 #include <vector>
-
-namespace LAMMPS_NS {
-class NeighList;
-}
 
 namespace etd {
 
@@ -32,9 +29,10 @@ class FrictionPairAssembly {
   bool rotation() const { return dofs_ == 6; }
   // a type pair's friction cutoff, 0 where the friction step has no pairs of those types
   double friction_cutoff(int itype, int jtype) const;
+  double friction_cutoff_max() const;    // over all type pairs
 
   struct Context {
-    LAMMPS_NS::NeighList *list;
+    PairListView list;
     const PartnerMap *partners;
     int groupbit;
     bool list_newton_off;    // each image pair is listed from both ends

@@ -74,7 +74,7 @@ void GhostExchange::unpack(LAMMPS *lmp, int n, int first, const double *buf) con
   }
 }
 
-void PartnerMap::find(LAMMPS *lmp, Fix *fix, NeighList *list, GhostExchange &ghosts)
+void PartnerMap::find(LAMMPS *lmp, Fix *fix, const PairListView &list, GhostExchange &ghosts)
 {
   const int nlocal = lmp->atom->nlocal;
   const int nghost = lmp->atom->nghost;
@@ -95,10 +95,10 @@ void PartnerMap::find(LAMMPS *lmp, Fix *fix, NeighList *list, GhostExchange &gho
   std::vector<Remote> remote;
   constexpr int unused = -1, remote_mark = -2;
   ghost_partner_.assign(nghost, unused);
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    const int *jlist = list->firstneigh[i];
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+  for (int ii = 0; ii < list.inum; ii++) {
+    const int i = list.ilist[ii];
+    const int *jlist = list.firstneigh[i];
+    for (int jj = 0; jj < list.numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       if (j < nlocal || ghost_partner_[j - nlocal] != unused) continue;
       const int rank = static_cast<int>(owner_[2 * j]);

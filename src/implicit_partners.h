@@ -8,6 +8,7 @@
 #ifndef ETD_IMPLICIT_PARTNERS_H
 #define ETD_IMPLICIT_PARTNERS_H
 
+#include "cell_pair_search.h"
 #include "lammps.h"
 #include "lmptype.h"
 #include "partner_exchange.h"
@@ -18,7 +19,6 @@
 
 namespace LAMMPS_NS {
 class Fix;
-class NeighList;
 }    // namespace LAMMPS_NS
 
 namespace etd {
@@ -52,9 +52,10 @@ class GhostExchange {
 class PartnerMap {
  public:
   explicit PartnerMap(MPI_Comm world) : exchange_(new PartnerExchange(world)) {}
-  // Which partner each ghost the list uses stands for; once per neighbor list build (ghosts
-  // are renumbered only then); collective.
-  void find(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::Fix *fix, LAMMPS_NS::NeighList *list,
+  // Which partner each ghost the list uses stands for; once per list (ghosts are renumbered
+  // only at LAMMPS's reneighboring, but the scheme's own search lists other ghosts each step);
+  // collective.
+  void find(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::Fix *fix, const PairListView &list,
             GhostExchange &ghosts);
   bool current(LAMMPS_NS::bigint neighbor_calls) const { return built_ == neighbor_calls; }
   void invalidate() { built_ = -1; }

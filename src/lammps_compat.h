@@ -67,6 +67,17 @@ namespace compat {
 #endif
   }
 
+  // the request's list built only on demand (Neighbor::build_one), not at each reneighboring
+  inline void make_request_occasional(LAMMPS_NS::Neighbor *neighbor, NeighRequestHandle request)
+  {
+#if ETD_LAMMPS_HAS_ADD_REQUEST
+    (void) neighbor;
+    request->apply_flags(LAMMPS_NS::NeighConst::REQ_OCCASIONAL);
+#else
+    neighbor->requests[request]->occasional = 1;
+#endif
+  }
+
   // A perpetual half neighbor list for a fix: the default newton setting, or with newton_off
   // newton off whatever the setting (a pair of an owned and a ghost atom is then listed on the
   // owned atom's side by every rank that owns one of the two, and twice on one rank where the

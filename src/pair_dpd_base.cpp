@@ -21,8 +21,8 @@ PairDPDBase::PairDPDBase(LAMMPS *lmp, const etd::CoeffDescription &coefficients,
     split_values(rotation_ ? FORCE_SPLIT_VALUES + TORQUE_SPLIT_VALUES : FORCE_SPLIT_VALUES),
     temperature(0.0), cut_global(0.0), seed(0), cut(nullptr), want_friction(false),
     want_split(false), conservative_only(false), neigh_request(), list_newton_off(false),
-    fdotr_turned_off(false), friction(nullptr), rot_friction(nullptr), split(nullptr),
-    nmax_extras(0)
+    fdotr_turned_off(false), external_pairs(nullptr), friction(nullptr), rot_friction(nullptr),
+    split(nullptr), nmax_extras(0)
 {
   writedata = 1;
   restartinfo = 1;
@@ -128,6 +128,7 @@ void PairDPDBase::init_style()
   // LAMMPS calls after this one: a run without fix etd gets the full DPD force back
   want_friction = want_split = conservative_only = false;
   list_newton_off = false;
+  external_pairs = nullptr;
   if (fdotr_turned_off) no_virial_fdotr_compute = 0;
   fdotr_turned_off = false;
 }
@@ -141,6 +142,28 @@ void PairDPDBase::request_newton_off_list()
     no_virial_fdotr_compute = 1;
     fdotr_turned_off = true;
   }
+}
+
+bool PairDPDBase::use_external_pairs(const etd::ExternalPairs *source)
+{
+  etd::compat::make_request_occasional(neighbor, neigh_request);
+  external_pairs = source;
+  return true;
+}
+
+void PairDPDBase::select_pairs()
+{
+  const etd::PairListView *given =
+      external_pairs ? external_pairs->pairs_for_step(update->ntimestep) : nullptr;
+  if (given) {
+    pair_list = *given;
+    return;
+  }
+  if (external_pairs) neighbor->build_one(list);    // occasional: built here when needed
+  pair_list.inum = list->inum;
+  pair_list.ilist = list->ilist;
+  pair_list.numneigh = list->numneigh;
+  pair_list.firstneigh = list->firstneigh;
 }
 
 bool PairDPDBase::forces_on_ghosts() const

@@ -18,6 +18,7 @@
 #include "pair_law.h"
 
 #include "atom.h"
+#include "cell_pair_search.h"
 #include "force.h"
 #include "neigh_list.h"
 #include "update.h"
@@ -56,6 +57,7 @@ class PairDPDBase : public Pair, public etd::DpdPairInterface {
   std::uint64_t noise_seed() const override { return static_cast<std::uint64_t>(seed); }
   void request_conservative_only() override { conservative_only = true; }
   void request_newton_off_list() override;
+  bool use_external_pairs(const etd::ExternalPairs *source) override;
 
  protected:
   // coefficients: the style's name and its per type pair coefficients; rotation: the style
@@ -89,6 +91,10 @@ class PairDPDBase : public Pair, public etd::DpdPairInterface {
   // their forces, is turned off until the next init)
   etd::compat::NeighRequestHandle neigh_request;
   bool list_newton_off, fdotr_turned_off;
+  // fix etd's pairs for the step, in place of LAMMPS's list (made occasional), where it has them
+  const etd::ExternalPairs *external_pairs;
+  etd::PairListView pair_list;    // what the force loop reads this compute (select_pairs)
+  void select_pairs();
   double **friction;        // [nmax][3] translational diagonal
   double **rot_friction;    // [nmax][3] rotational diagonal (with rotation only)
   double **split;           // [nmax][split_values]
@@ -136,6 +142,7 @@ void PairDPDBase::compute_pairs(const typename Law::Coefficients *table, int str
                                 int vflag)
 {
   ev_init(eflag, vflag);
+  select_pairs();
   const bool extras = prepare_extras();
 
   if (evflag)
@@ -169,7 +176,7 @@ void PairDPDBase::eval_with_extras(const typename Law::Coefficients *table, int 
 template <class Law, int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE>
 void PairDPDBase::eval(const typename Law::Coefficients *table, int stride)
 {
-  if (list->inum == 0) return;    // (x may be unallocated on a rank without atoms)
+  if (pair_list.inum == 0) return;    // (x may be unallocated on a rank without atoms)
   // LAMMPS stores x, v, f, omega and torque contiguously: atom j's row is at 3 j
   const double *xflat = atom->x[0];
   const double *vflat = atom->v[0];
@@ -183,8 +190,8 @@ void PairDPDBase::eval(const typename Law::Coefficients *table, int stride)
   const int newton_pair = forces_on_ghosts();
   const etd::PairStep step{noise, update->ntimestep, 1.0 / std::sqrt(update->dt)};
 
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
+  for (int ii = 0; ii < pair_list.inum; ii++) {
+    const int i = pair_list.ilist[ii];
     // atom i's values and sums stay in registers over its neighbours (stores to j could alias
     // them in memory)
     const double xi[3] = {xflat[3 * i], xflat[3 * i + 1], xflat[3 * i + 2]};
@@ -200,7 +207,7 @@ void PairDPDBase::eval(const typename Law::Coefficients *table, int stride)
 
     // the neighbours within the cutoff first (close_neighbors.h), then the work on those only
     const int nclose = etd::gather_close_neighbors(
-        list->firstneigh[i], list->numneigh[i], NEIGHMASK, xflat, xi[0], xi[1], xi[2],
+        pair_list.firstneigh[i], pair_list.numneigh[i], NEIGHMASK, xflat, xi[0], xi[1], xi[2],
         [&](int j, double rsq) {
           return rsq < cutsqi[type[j]];
         },

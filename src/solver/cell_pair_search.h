@@ -1,0 +1,227 @@
+// ETD-DPD: the implicit scheme's own pair search. At the steps this scheme takes, the fastest
+// atoms cross half of LAMMPS's skin in one step, so LAMMPS rebuilds its lists at every step
+// anyway; one search per step over a grid of cells, at the positions of the moment and with a
+// small margin for the coming half drift, costs less than that build. Pure C++ (unit-tested
+// without LAMMPS); the result reads like a LAMMPS half list.
+#ifndef ETD_CELL_PAIR_SEARCH_H
+#define ETD_CELL_PAIR_SEARCH_H
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace etd {
+
+// The fields of a LAMMPS half neighbor list that the package's loops read: for ii < inum,
+// atom i = ilist[ii] has numneigh[i] partners at firstneigh[i].
+struct PairListView {
+  int inum = 0;
+  const int *ilist = nullptr;
+  const int *numneigh = nullptr;
+  int *const *firstneigh = nullptr;
+};
+
+class CellPairSearch {
+ public:
+  // Every pair (i, j) with i < nlocal, j < nall and |x_i - x_j| < cutoff (x: nall rows of 3):
+  //  - two owned atoms, once, listed from the lower index;
+  //  - an owned atom and a ghost, listed from the owned atom: with newton_off always (the
+  //    ghost's owner lists the pair too), otherwise once per pair of periodic images, where the
+  //    ghost lies "above" (larger z, then y, then x): the images i - j' and j - i' of one pair
+  //    are displaced oppositely, so exactly one of them is kept.
+  void build(const double *x, int nlocal, int nall, double cutoff, bool newton_off)
+  {
+    nlocal_ = nlocal;
+    first_.clear();
+    second_.clear();
+    if (nlocal > 0) {
+      bin(x, nall, cutoff);
+      collect(cutoff * cutoff, nlocal);
+    }
+    index(x, nlocal, newton_off);
+  }
+
+  PairListView view() const
+  {
+    return {nlocal_, ilist_.data(), numneigh_.data(), firstneigh_.data()};
+  }
+  std::size_t pairs() const { return neighbors_.size(); }
+  std::size_t memory_usage() const
+  {
+    return sizeof(int) *
+        (ilist_.capacity() + numneigh_.capacity() + neighbors_.capacity() + start_.capacity() +
+         owned_.capacity() + sorted_.capacity() + first_.capacity() + second_.capacity() +
+         cell_of_.capacity()) +
+        sizeof(int *) * firstneigh_.capacity() + sizeof(double) * sorted_x_.capacity();
+  }
+
+ private:
+  static bool above(double dx, double dy, double dz)
+  {
+    if (dz != 0.0) return dz > 0.0;
+    if (dy != 0.0) return dy > 0.0;
+    return dx > 0.0;
+  }
+
+  // Cells no smaller than the cutoff over the atoms' bounding box, so that a pair lies in one
+  // cell or two neighbouring ones; atoms and their positions sorted by cell (a counting sort).
+  // A box stretched by a far-away atom gets coarser cells rather than more cells than atoms.
+  void bin(const double *x, int nall, double cutoff)
+  {
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; k++) lo[k] = hi[k] = x[k];
+    for (int j = 1; j < nall; j++)
+      for (int k = 0; k < 3; k++) {
+        lo[k] = std::min(lo[k], x[3 * j + k]);
+        hi[k] = std::max(hi[k], x[3 * j + k]);
+      }
+    double size = (cutoff > 0.0 ? cutoff : 1.0) / CELLS_PER_CUTOFF;
+    const double cell_budget = 2.0 * nall + 27.0;
+    for (;;) {
+      double cells = 1.0;
+      for (int k = 0; k < 3; k++) cells *= std::max(1.0, std::floor((hi[k] - lo[k]) / size));
+      if (cells <= cell_budget) break;
+      size *= 1.26;
+    }
+    double inverse[3];
+    double edge[3];
+    for (int k = 0; k < 3; k++) {
+      n_[k] = std::max(1, static_cast<int>(std::floor((hi[k] - lo[k]) / size)));
+      inverse[k] = hi[k] > lo[k] ? n_[k] / (hi[k] - lo[k]) : 0.0;
+      edge[k] = hi[k] > lo[k] ? (hi[k] - lo[k]) / n_[k] : 0.0;
+    }
+    make_stencil(edge, cutoff);
+    const int ncells = n_[0] * n_[1] * n_[2];
+    cell_of_.resize(nall);
+    start_.assign(ncells + 1, 0);
+    owned_.assign(ncells, 0);
+    const int nlocal = nlocal_;
+    for (int j = 0; j < nall; j++) {
+      int c[3];
+      for (int k = 0; k < 3; k++)
+        c[k] = std::min(n_[k] - 1, static_cast<int>((x[3 * j + k] - lo[k]) * inverse[k]));
+      const int cell = c[0] + n_[0] * (c[1] + n_[1] * c[2]);
+      cell_of_[j] = cell;
+      start_[cell + 1]++;
+      if (j < nlocal) owned_[cell] = 1;
+    }
+    for (int c = 0; c < ncells; c++) start_[c + 1] += start_[c];
+    sorted_.resize(nall);
+    sorted_x_.resize(3 * static_cast<std::size_t>(nall));
+    fill_.assign(start_.begin(), start_.end() - 1);
+    for (int j = 0; j < nall; j++) {
+      const int s = fill_[cell_of_[j]]++;
+      sorted_[s] = j;
+      for (int k = 0; k < 3; k++) sorted_x_[3 * s + k] = x[3 * j + k];
+    }
+  }
+
+  // Every pair within the cutoff with at least one owned atom, once: each cell against itself
+  // and the neighbouring cells after it (stencil_) that can hold a partner; cells that hold
+  // only ghosts are paired only with cells that hold owned atoms.
+  void collect(double cutsq, int nlocal)
+  {
+    for (int cz = 0; cz < n_[2]; cz++)
+      for (int cy = 0; cy < n_[1]; cy++)
+        for (int cx = 0; cx < n_[0]; cx++) {
+          const int c = cx + n_[0] * (cy + n_[1] * cz);
+          const int a0 = start_[c], a1 = start_[c + 1];
+          if (a0 == a1) continue;
+          if (owned_[c]) pair_cells(a0, a1, a0, a1, true, cutsq, nlocal);
+          for (const Offset &d : stencil_) {
+            const int x2 = cx + d.dx, y2 = cy + d.dy, z2 = cz + d.dz;
+            if (x2 < 0 || x2 >= n_[0] || y2 < 0 || y2 >= n_[1] || z2 >= n_[2]) continue;
+            const int c2 = x2 + n_[0] * (y2 + n_[1] * z2);
+            if (!owned_[c] && !owned_[c2]) continue;
+            pair_cells(a0, a1, start_[c2], start_[c2 + 1], false, cutsq, nlocal);
+          }
+        }
+  }
+
+  void pair_cells(int a0, int a1, int b0, int b1, bool same, double cutsq, int nlocal)
+  {
+    for (int a = a0; a < a1; a++) {
+      const int ia = sorted_[a];
+      const double xa = sorted_x_[3 * a], ya = sorted_x_[3 * a + 1], za = sorted_x_[3 * a + 2];
+      for (int b = same ? a + 1 : b0; b < b1; b++) {
+        const double dx = sorted_x_[3 * b] - xa, dy = sorted_x_[3 * b + 1] - ya,
+                     dz = sorted_x_[3 * b + 2] - za;
+        if (dx * dx + dy * dy + dz * dz >= cutsq) continue;
+        const int ib = sorted_[b];
+        if (ia >= nlocal && ib >= nlocal) continue;
+        first_.push_back(ia);
+        second_.push_back(ib);
+      }
+    }
+  }
+
+  // The offsets to the cells after a cell (in the order z, y, x) whose nearest points are closer
+  // than the cutoff: with cells of at least cutoff / CELLS_PER_CUTOFF a side, every pair lies in
+  // one cell or in two that are these offsets apart.
+  void make_stencil(const double edge[3], double cutoff)
+  {
+    stencil_.clear();
+    const int reach = CELLS_PER_CUTOFF;
+    for (int dz = 0; dz <= reach; dz++)
+      for (int dy = -reach; dy <= reach; dy++)
+        for (int dx = -reach; dx <= reach; dx++) {
+          if (dz == 0 && (dy < 0 || (dy == 0 && dx <= 0))) continue;
+          const int d[3] = {dx, dy, dz};
+          double gap = 0.0;
+          for (int k = 0; k < 3; k++) {
+            const double g = std::max(0, std::abs(d[k]) - 1) * edge[k];
+            gap += g * g;
+          }
+          if (gap < cutoff * cutoff) stencil_.push_back({dx, dy, dz});
+        }
+  }
+
+  // Each pair oriented (owned atom first, the lower index of two owned ones), kept or not by
+  // the newton setting, and sorted by its first atom into the list's rows.
+  void index(const double *x, int nlocal, bool newton_off)
+  {
+    ilist_.resize(nlocal);
+    for (int i = 0; i < nlocal; i++) ilist_[i] = i;
+    numneigh_.assign(nlocal, 0);
+    std::size_t kept = 0;
+    for (std::size_t p = 0; p < first_.size(); p++) {
+      int i = first_[p], j = second_[p];
+      if (i >= nlocal || (j < nlocal && j < i)) std::swap(i, j);
+      if (j >= nlocal && !newton_off &&
+          !above(x[3 * j] - x[3 * i], x[3 * j + 1] - x[3 * i + 1], x[3 * j + 2] - x[3 * i + 2]))
+        continue;
+      first_[kept] = i;
+      second_[kept] = j;
+      kept++;
+      numneigh_[i]++;
+    }
+    neighbors_.resize(kept);
+    firstneigh_.resize(nlocal);
+    fill_.resize(nlocal);
+    int offset = 0;
+    for (int i = 0; i < nlocal; i++) {
+      firstneigh_[i] = neighbors_.data() + offset;
+      fill_[i] = offset;
+      offset += numneigh_[i];
+    }
+    for (std::size_t p = 0; p < kept; p++) neighbors_[fill_[first_[p]]++] = second_[p];
+  }
+
+  static constexpr int CELLS_PER_CUTOFF = 1;
+  struct Offset {
+    int dx, dy, dz;
+  };
+  std::vector<Offset> stencil_;
+  int nlocal_ = 0;
+  int n_[3] = {1, 1, 1};
+  std::vector<int> cell_of_, start_, owned_, sorted_, fill_;
+  std::vector<double> sorted_x_;
+  std::vector<int> first_, second_;    // the pairs found, before they are indexed
+  std::vector<int> ilist_, numneigh_, neighbors_;
+  std::vector<int *> firstneigh_;
+};
+
+}    // namespace etd
+
+#endif
