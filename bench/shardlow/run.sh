@@ -2,20 +2,20 @@
 # The comparison with LAMMPS's fix shardlow (README.md): the runs behind the breakdown map and
 # its table. Records go to bench/accuracy/results/ (the accuracy matrix's, through its run.py);
 # map.md and map.png are regenerated from them. Usage:
-#   bash bench/shardlow/run.sh [scan|viscosity|refusals|map ...]   (default: all four, about 90
-#   CPU-minutes; the GW fluid's own shardlow cells are in bench/accuracy/campaign.sh GW and
-#   confirm.sh GW)
+#   bash bench/shardlow/run.sh [scan|viscosity|viscosity-m1|refusals|map ...]   (default: all
+#   five, about 125 CPU-minutes; the GW fluid's own shardlow cells are in
+#   bench/accuracy/campaign.sh GW and confirm.sh GW)
 set -u
 cd "$(dirname "$0")"
 PLUGIN=${PLUGIN:-/tmp/accuracy/etddpdplugin.so}
 . ../../tools/lammps_env.sh
 export LMP PLUGIN
-steps=${*:-scan viscosity refusals map}
+steps=${*:-scan viscosity viscosity-m1 refusals map}
 run=(/usr/bin/python3 ../accuracy/run.py)
 for step in $steps; do
   case "$step" in
-    scan|viscosity|refusals|map) ;;
-    *) echo "run.sh: unknown step '$step' (scan, viscosity, refusals or map)" >&2; exit 2 ;;
+    scan|viscosity|viscosity-m1|refusals|map) ;;
+    *) echo "run.sh: unknown step '$step' (scan, viscosity, viscosity-m1, refusals or map)" >&2; exit 2 ;;
   esac
 done
 for step in $steps; do
@@ -49,11 +49,10 @@ for step in $steps; do
         $V --fluid GW --mass 0.01 --force 0.1 --integrator "${cell%%:*}" --dt "${cell##*:}" --seed "$seed"
       done
     done
-    # the other masses of GW, four seeds: the reference, stock, shardlow and the implicit scheme
-    # at their largest steps of the seed check
+    # GW at m = 0.1 and 0.001, four seeds: the reference, stock, shardlow and the implicit
+    # scheme at their largest steps of the seed check (m = 1: viscosity-m1)
     for seed in 10 11 12 13; do
-      for cells in "1 stock:0.001 stock:0.005 shardlow:0.02 imp:0.04" \
-                   "0.1 stock:0.0003 stock:0.005 shardlow:0.01 imp:0.02" \
+      for cells in "0.1 stock:0.0003 stock:0.005 shardlow:0.01 imp:0.02" \
                    "0.001 stock:0.00003 stock:0.0001 shardlow:0.0007 imp:0.001"; do
         set -- $cells
         mass=$1; shift
@@ -65,6 +64,16 @@ for step in $steps; do
     for seed in 10 11; do
       for cell in stock:0.00005 shardlow:0.0005 shardlow:0.002 shardlow:0.005 imp:0.0005 imp:0.002 imp:0.005; do
         $V --fluid HG --mass 0.01 --force 0.3 --integrator "${cell%%:*}" --dt "${cell##*:}" --seed "$seed"
+      done
+    done ;;
+  viscosity-m1)
+    # GW at m = 1, the same cells: the flow's slowest mode relaxes in rho / (eta k^2) = 8.7 time
+    # units there (0.1 at m = 0.01), so 40 time units of start-up and 40 of averaging, sixteen
+    # seeds (about 35 CPU-minutes)
+    for seed in $(seq 20 35); do
+      for cell in stock:0.001 stock:0.005 shardlow:0.02 imp:0.04; do
+        "${run[@]}" viscosity --equil 40 --time 40 --fluid GW --mass 1 --force 0.1 \
+          --integrator "${cell%%:*}" --dt "${cell##*:}" --seed "$seed"
       done
     done ;;
   refusals) bash refusals.sh ;;
