@@ -125,8 +125,12 @@ if [ ! -f "$prefix/.complete" ]; then
     cp -a "$ksrc" "$prefix/kokkos-source"
     sed -i "s/^default_arch=.*/default_arch=\"$sm\"/" "$prefix/kokkos-source/bin/nvcc_wrapper"
     if [ "$cuda_major" -ge 13 ] && [ "${kver%.*}" = 4.6 ]; then
-      patch -d "$prefix/kokkos-source" -p1 <"$here/tools/kokkos/kokkos-4.6.1-cuda13.patch" >/dev/null \
-        || die "kokkos-4.6.1-cuda13.patch does not apply to Kokkos $kver"
+      cuda13_patch=$here/tools/kokkos/kokkos-4.6.1-cuda13.patch
+      if command -v patch >/dev/null; then
+        patch -d "$prefix/kokkos-source" -p1 <"$cuda13_patch" >/dev/null
+      else  # git apply outside a repository patches plain files too
+        (cd "$prefix/kokkos-source" && git apply -p1 "$cuda13_patch")
+      fi || die "kokkos-4.6.1-cuda13.patch does not apply to Kokkos $kver"
     fi
     ksrc="$prefix/kokkos-source"
     compiler=(-D CMAKE_CXX_COMPILER="$ksrc/bin/nvcc_wrapper")
