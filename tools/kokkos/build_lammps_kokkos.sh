@@ -114,7 +114,8 @@ step() {  # NAME LOG COMMAND...
 }
 if [ ! -f "$prefix/.complete" ]; then
   log "building Kokkos $kver (shared) and LAMMPS $version ($tag) with KOKKOS into $prefix"
-  rm -rf "$prefix"; mkdir -p "$prefix"
+  # a build stopped midway (a time limit) resumes: its build folders are incremental
+  mkdir -p "$prefix"
   t0=$(date +%s)
   compiler=()
   if [ "$backend" = cuda ]; then
@@ -122,15 +123,19 @@ if [ ! -f "$prefix/.complete" ]; then
     # nvcc 13 no longer knows) must be this GPU's before CMake's first compiler check, and
     # Kokkos 4.6 needs a patch for CUDA 13's runtime API
     log "backend cuda: nvcc $cuda_version, Kokkos_ARCH_$arch ($sm)"
-    cp -a "$ksrc" "$prefix/kokkos-source"
-    sed -i "s/^default_arch=.*/default_arch=\"$sm\"/" "$prefix/kokkos-source/bin/nvcc_wrapper"
-    if [ "$cuda_major" -ge 13 ] && [ "${kver%.*}" = 4.6 ]; then
-      cuda13_patch=$here/tools/kokkos/kokkos-4.6.1-cuda13.patch
-      if command -v patch >/dev/null; then
-        patch -d "$prefix/kokkos-source" -p1 <"$cuda13_patch" >/dev/null
-      else  # git apply outside a repository patches plain files too
-        (cd "$prefix/kokkos-source" && git apply -p1 "$cuda13_patch")
-      fi || die "kokkos-4.6.1-cuda13.patch does not apply to Kokkos $kver"
+    if [ ! -f "$prefix/kokkos-source/.prepared" ]; then
+      rm -rf "$prefix/kokkos-source"
+      cp -a "$ksrc" "$prefix/kokkos-source"
+      sed -i "s/^default_arch=.*/default_arch=\"$sm\"/" "$prefix/kokkos-source/bin/nvcc_wrapper"
+      if [ "$cuda_major" -ge 13 ] && [ "${kver%.*}" = 4.6 ]; then
+        cuda13_patch=$here/tools/kokkos/kokkos-4.6.1-cuda13.patch
+        if command -v patch >/dev/null; then
+          patch -d "$prefix/kokkos-source" -p1 <"$cuda13_patch" >/dev/null
+        else  # git apply outside a repository patches plain files too
+          (cd "$prefix/kokkos-source" && git apply -p1 "$cuda13_patch")
+        fi || die "kokkos-4.6.1-cuda13.patch does not apply to Kokkos $kver"
+      fi
+      touch "$prefix/kokkos-source/.prepared"
     fi
     ksrc="$prefix/kokkos-source"
     compiler=(-D CMAKE_CXX_COMPILER="$ksrc/bin/nvcc_wrapper")

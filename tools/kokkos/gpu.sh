@@ -70,8 +70,9 @@ fi
 logs=$root/build-gpu-results/logs
 mkdir -p "$results" "$logs"
 has() { [[ ",$phases," == *",$1,"* ]]; }
-copy_out() {  # results and logs to the device tool's folder (8 files at most), also after a failure
-  [ -n "${OUT:-}" ] || return 0
+table() { python3 "$root/bench/kokkos/gpu_table.py" "$results/gpu.jsonl" "$results/gpu-tests.jsonl" >"$results/gpu.md"; }
+copy_out() {  # results and logs to the device tool's folder (8 files at most), after each step:
+  [ -n "${OUT:-}" ] || return 0  # a command stopped at its time limit keeps what is there
   cp "$results"/gpu*.jsonl "$results"/gpu.md "$OUT"/ 2>/dev/null || true
   tar -C "$logs" -czf "$OUT/logs.tar.gz" . 2>/dev/null || true
 }
@@ -141,6 +142,7 @@ if has build; then
   bash "$root/tools/kokkos/test.sh" -L kokkos -N >"$logs/build.log" 2>&1 \
     || { tail -40 "$logs/build.log" >&2; die "the package did not build (log: $logs/build.log)"; }
   log "package built ($(( $(date +%s) - t0 )) s in all)"
+  copy_out
 fi
 if has test; then
   status=0
@@ -151,6 +153,7 @@ if has test; then
   printf '{"kind": "tests", "backend": "%s", "label": "kokkos", "total": %d, "failed": %d, "exit": %d}\n' \
     "$backend" "$total" "$failed" "$status" >"$results/gpu-tests.jsonl"
   log "equivalence tests: $((total - failed)) of $total passed"
+  copy_out
 fi
 
 # ---- bench --------------------------------------------------------------------------------
@@ -196,6 +199,7 @@ if has bench; then
       if [ "$status" != 0 ] || [ -z "$loop" ]; then
         log "$case_name $natoms atoms: FAILED (exit $status; $runlog)"
         printf '{"kind": "run", "case": "%s", "natoms": %d, "error": "exit %d"}\n' "$case_name" "$natoms" "$status" >>"$out"
+        table; copy_out
         continue
       fi
       read -r loop_s done_steps <<<"$loop"
@@ -203,10 +207,11 @@ if has bench; then
         "$backend" "$device" "$case_name" "${style%,}" "$integrator" "$natoms" "$dt" "$done_steps" "$loop_s" \
         "$([ "$done_steps" -lt "$steps" ] && echo true || echo false)" "$lammps_version" "${kokkos[*]} ${package[*]}" >>"$out"
       log "$case_name $natoms atoms: $done_steps steps in $loop_s s ($(( $(date +%s) - t1 )) s with set-up)"
+      table; copy_out
     done
   done
 fi
 if has test || has bench; then
-  python3 "$root/bench/kokkos/gpu_table.py" "$results/gpu.jsonl" "$results/gpu-tests.jsonl" >"$results/gpu.md"
+  table
   cat "$results/gpu.md"
 fi

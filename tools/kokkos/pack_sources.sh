@@ -3,8 +3,9 @@
 # folder (default ./build-gpu-sources), small enough to travel with the working tree:
 #   kokkos.tar.xz   the Kokkos source without its tests and docs
 #   lammps.tar.xz   the LAMMPS source that CMake reads for the CUDA build (build_lammps_kokkos.sh,
-#                   ETD_DPD_KOKKOS_BACKEND=cuda): cmake/, src/ with the packages KOKKOS, DPD-BASIC,
-#                   DPD-REACT, PLUGIN and STUBS, doc/lammps.1, and empty potentials/ and bench/
+#                   ETD_DPD_KOKKOS_BACKEND=cuda): cmake/, src/ (its files, fmt/ and the packages
+#                   KOKKOS, DPD-BASIC, DPD-REACT, PLUGIN and STUBS), doc/lammps.1, and empty
+#                   potentials/ and bench/
 #                   (LAMMPS installs both folders)
 #   deps.tar.xz     headers and sources the package's build needs where the machine lacks them:
 #                   Random123, the Boost headers that its Boost includes reach (and all of
@@ -40,6 +41,7 @@ tar -C "$(dirname "$ksrc")" -cJf "$out/kokkos.tar.xz" \
 mkdir -p "$work/lammps/src" "$work/lammps/doc" "$work/lammps/potentials" "$work/lammps/bench"
 cp -a "$lsrc/cmake" "$work/lammps/"
 find "$lsrc/src" -maxdepth 1 -type f -exec cp -a {} "$work/lammps/src/" \;
+find "$lsrc/src" -mindepth 1 -maxdepth 1 -type d -name '[a-z]*' -exec cp -a {} "$work/lammps/src/" \;  # fmt/
 for package in KOKKOS DPD-BASIC DPD-REACT PLUGIN STUBS; do cp -a "$lsrc/src/$package" "$work/lammps/src/"; done
 cp -a "$lsrc/doc/lammps.1" "$work/lammps/doc/"
 tar -C "$work" -cJf "$out/lammps.tar.xz" lammps
