@@ -17,7 +17,8 @@
 #          (atom-steps/s x dt): equal accuracy, bench/accuracy/results/matrix.md.
 # Results: RESULTS/gpu.jsonl (one line a run), RESULTS/gpu-tests.jsonl (the tests' count) and
 # RESULTS/gpu.md (bench/kokkos/gpu_table.py); with $OUT set (the device tool's folder that comes
-# back) they and logs.tar.gz are copied there. RESULTS: bench/kokkos/results with cuda, ./build-gpu-results else.
+# back) they and logs.tar.gz are copied there after each step. RESULTS: bench/kokkos/results with
+# cuda, ./build-gpu-results with openmp.
 #
 # Needs: nvcc 12.0 or newer with a host compiler it accepts (CUDA 13 with Kokkos 4.6: the source
 # is patched, tools/kokkos/kokkos-4.6.1-cuda13.patch), CMake 3.16 or newer, MPI (mpicxx, mpirun).
@@ -35,8 +36,10 @@
 #
 # On the device tool, after tools/kokkos/pack_sources.sh here (one call, on the H100):
 #   run(command="tools/kokkos/gpu.sh", carry=["build-gpu-sources"], timeout_s=600)
-# A call that stops inside its limit can be followed at once on the warm machine by
-#   run(command="tools/kokkos/gpu.sh --phases test,bench", carry=["build-gpu-sources"])
+# A call stopped at its limit during the build: the same call again at once, while the machine is
+# warm (30 s); the build resumes where it stopped. To repeat only the measurements there:
+#   run(command="tools/kokkos/gpu.sh --phases test,bench", carry=["build-gpu-sources"],
+#       timeout_s=600)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 log() { printf '[etd-dpd %s] %s\n' "$(date +%H:%M:%S)" "$*" >&2; }
