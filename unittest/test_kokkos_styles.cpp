@@ -1,8 +1,10 @@
 // The KOKKOS styles (pair_style dpd/gen/kk) against the CPU styles in the same process, with
-// LAMMPS run as `-k on t N -sf kk` (N from ETD_KOKKOS_THREADS, default 1): forces, energy and
+// LAMMPS run as `-k on t N -sf kk` (N from ETD_KOKKOS_THREADS, default 1; with ETD_KOKKOS_GPUS=G
+// `-k on g G t N -sf kk -pk kokkos neigh half newton on`, for a CUDA Kokkos): forces, energy and
 // virial; trajectories under fix nve and both schemes of fix etd; compute dpd/split; kBT and P
 // beside LAMMPS's own dpd/kk; restart; bad input. Built and run only against a KOKKOS LAMMPS
-// (tools/kokkos/test.sh), on 1 and 2 ranks with 1 and 2 threads.
+// (tools/kokkos/test.sh), on 1 and 2 ranks with 1 and 2 threads, or with a CUDA Kokkos on 1 and 2
+// ranks sharing one GPU.
 #include "lammps_fixture.h"
 
 #include <gtest/gtest.h>
@@ -31,7 +33,13 @@ const std::string DATA = etdtest::work_file("kokkos_styles.data");
 std::vector<std::string> kokkos_args()
 {
   const char *threads = std::getenv("ETD_KOKKOS_THREADS");
-  return {"-k", "on", "t", threads ? threads : "1", "-sf", "kk"};
+  const char *gpus = std::getenv("ETD_KOKKOS_GPUS");    // a CUDA Kokkos: -k on g N
+  std::vector<std::string> args = {"-k", "on", "t", threads ? threads : "1", "-sf", "kk"};
+  if (!gpus) return args;
+  // on a GPU LAMMPS defaults to full lists and newton off; dpd/gen/kk needs half lists, newton on
+  args.insert(args.begin() + 2, {"g", gpus});
+  args.insert(args.end(), {"-pk", "kokkos", "neigh", "half", "newton", "on"});
+  return args;
 }
 
 // n = 3 fluid of 648 atoms in a 6^3 box, two types, random velocities; IDs come from the data

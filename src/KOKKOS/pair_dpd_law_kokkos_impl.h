@@ -254,7 +254,9 @@ void PairDPDLawKokkos<DeviceType, Style>::extras_to_device(bool extras)
     } else if constexpr (reads_host_memory) {
       device = ExtrasView(&host[0][0], rows, columns);
     } else {
-      if (static_cast<int>(device.extent(0)) != rows) device = ExtrasView(name, rows, columns);
+      // a label is a std::string: View takes no const char * (the host branch above hid this)
+      if (static_cast<int>(device.extent(0)) != rows)
+        device = ExtrasView(std::string(name), rows, columns);
       Kokkos::deep_copy(device, 0.0);
     }
   };

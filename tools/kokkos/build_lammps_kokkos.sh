@@ -1,6 +1,12 @@
 #!/usr/bin/env bash
-# Build a KOKKOS LAMMPS (OpenMP + Serial backends, no GPU) to build the package's /kk styles
-# against, idempotently, into a cache prefix keyed by version and configuration:
+# Build a KOKKOS LAMMPS to build the package's /kk styles against, idempotently, into a cache
+# prefix keyed by backend, version and configuration. Backends (ETD_DPD_KOKKOS_BACKEND):
+#   openmp (default)  OpenMP + Serial, the packages of the whole test suite
+#   cuda              CUDA + Serial for one GPU architecture, the packages of the KOKKOS tests
+#                     and tools/kokkos/gpu.sh alone (KOKKOS, DPD-BASIC, DPD-REACT, PLUGIN);
+#                     needs nvcc 12.0 or newer (Kokkos 4.6.1 with nvcc 13: a patched copy of the
+#                     source, kokkos-4.6.1-cuda13.patch) and compiles with Kokkos's nvcc_wrapper
+# Steps:
 #   1. Kokkos from Debian's kokkos source package (sid by default), fetched and verified by
 #      tools/debian_lammps_source.sh:
 #        InRelease (gpgv, debian-archive-keyring) -> main/source/Sources.xz -> orig tarball
@@ -20,6 +26,8 @@
 #   KOKKOS_SOURCE    use this Kokkos source tree (a kokkos release unpacked) instead of Debian's
 #   ETD_DPD_CACHE    cache folder (default ~/.cache/etd-dpd)
 #   ETD_DPD_JOBS     parallel build jobs (default: number of cores)
+#   ETD_DPD_KOKKOS_BACKEND  openmp (default) or cuda
+#   ETD_DPD_KOKKOS_ARCH     cuda: Kokkos's GPU architecture (default HOPPER90: H100, H200)
 #   ETD_DPD_DEBIAN_MIRROR  (default http://deb.debian.org/debian)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -56,20 +64,48 @@ else
 fi
 version=$(sed -n 's/#define LAMMPS_VERSION "\(.*\)"/\1/p' "$src/src/version.h" | tr -d ' ')
 
-kokkos_cmake_options=(
-  -D CMAKE_BUILD_TYPE=Release -D BUILD_SHARED_LIBS=on -D CMAKE_CXX_STANDARD=20
-  -D CMAKE_CXX_EXTENSIONS=off -D Kokkos_ENABLE_OPENMP=on -D Kokkos_ENABLE_SERIAL=on
-  -D Kokkos_ENABLE_IMPL_VIEW_LEGACY=on
-)
-lammps_cmake_options=(
-  -D CMAKE_BUILD_TYPE=Release -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=on
-  -D LAMMPS_EXCEPTIONS=on -D PKG_PLUGIN=on -D PKG_DPD-BASIC=on -D PKG_MOLECULE=on
-  -D PKG_EXTRA-FIX=on -D PKG_RIGID=on -D PKG_DPD-REACT=on -D PKG_EXTRA-PAIR=off
-  -D PKG_KOKKOS=on -D EXTERNAL_KOKKOS=on -D Kokkos_ENABLE_OPENMP=on -D Kokkos_ENABLE_SERIAL=on
-)
+backend=${ETD_DPD_KOKKOS_BACKEND:-openmp}
+case "$backend" in
+  openmp)
+    kokkos_cmake_options=(
+      -D CMAKE_BUILD_TYPE=Release -D BUILD_SHARED_LIBS=on -D CMAKE_CXX_STANDARD=20
+      -D CMAKE_CXX_EXTENSIONS=off -D Kokkos_ENABLE_OPENMP=on -D Kokkos_ENABLE_SERIAL=on
+      -D Kokkos_ENABLE_IMPL_VIEW_LEGACY=on
+    )
+    lammps_cmake_options=(
+      -D CMAKE_BUILD_TYPE=Release -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=on
+      -D LAMMPS_EXCEPTIONS=on -D PKG_PLUGIN=on -D PKG_DPD-BASIC=on -D PKG_MOLECULE=on
+      -D PKG_EXTRA-FIX=on -D PKG_RIGID=on -D PKG_DPD-REACT=on -D PKG_EXTRA-PAIR=off
+      -D PKG_KOKKOS=on -D EXTERNAL_KOKKOS=on -D Kokkos_ENABLE_OPENMP=on -D Kokkos_ENABLE_SERIAL=on
+    )
+    name=lammps-kokkos ;;
+  cuda)
+    command -v nvcc >/dev/null || die "backend cuda: no nvcc on PATH (the CUDA toolkit, 12.0 or newer)"
+    cuda_version=$(nvcc --version | sed -n 's/.*release \([0-9]*\.[0-9]*\).*/\1/p')
+    cuda_major=${cuda_version%%.*}
+    [ "${cuda_major:-0}" -ge 12 ] || die "backend cuda: nvcc $cuda_version; Kokkos $kver needs CUDA 12.0 or newer"
+    arch=${ETD_DPD_KOKKOS_ARCH:-HOPPER90}
+    case "$arch" in  # nvcc's name of the architecture, for nvcc_wrapper's default
+      HOPPER90) sm=sm_90 ;; ADA89) sm=sm_89 ;; AMPERE86) sm=sm_86 ;; AMPERE80) sm=sm_80 ;;
+      *) die "backend cuda: ETD_DPD_KOKKOS_ARCH=$arch is not one of HOPPER90 ADA89 AMPERE86 AMPERE80" ;;
+    esac
+    # C++17: LAMMPS's KOKKOS package needs no more, and nvcc 12 takes C++20 only with newer GCCs
+    kokkos_cmake_options=(
+      -D CMAKE_BUILD_TYPE=Release -D BUILD_SHARED_LIBS=on -D CMAKE_CXX_STANDARD=17
+      -D CMAKE_CXX_EXTENSIONS=off -D Kokkos_ENABLE_CUDA=on -D Kokkos_ENABLE_SERIAL=on
+      -D "Kokkos_ARCH_$arch=on" -D Kokkos_ENABLE_IMPL_VIEW_LEGACY=on
+    )
+    lammps_cmake_options=(
+      -D CMAKE_BUILD_TYPE=Release -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=on
+      -D LAMMPS_EXCEPTIONS=on -D PKG_PLUGIN=on -D PKG_DPD-BASIC=on -D PKG_DPD-REACT=on
+      -D PKG_KOKKOS=on -D EXTERNAL_KOKKOS=on
+    )
+    name=lammps-kokkos-cuda ;;
+  *) die "ETD_DPD_KOKKOS_BACKEND=$backend: openmp or cuda" ;;
+esac
 confhash=$(printf '%s\n' "${kokkos_cmake_options[@]}" "kokkos-$kver" "${lammps_cmake_options[@]}" "$tag" \
            | sha1sum | cut -c1-10)
-prefix="$cache/lammps-kokkos-$version-$confhash"
+prefix="$cache/$name-$version-$confhash"
 common=(-D CMAKE_INSTALL_PREFIX="$prefix" -D CMAKE_INSTALL_LIBDIR=lib -D CMAKE_INSTALL_RPATH="$prefix/lib"
         -D CMAKE_EXE_LINKER_FLAGS="-Wl,--disable-new-dtags" -D CMAKE_SHARED_LINKER_FLAGS="-Wl,--disable-new-dtags")
 step() {  # NAME LOG COMMAND...
@@ -78,22 +114,47 @@ step() {  # NAME LOG COMMAND...
 }
 if [ ! -f "$prefix/.complete" ]; then
   log "building Kokkos $kver (shared) and LAMMPS $version ($tag) with KOKKOS into $prefix"
-  rm -rf "$prefix"; mkdir -p "$prefix"
+  # a build stopped midway (a time limit) resumes: its build folders are incremental
+  mkdir -p "$prefix"
   t0=$(date +%s)
+  compiler=()
+  if [ "$backend" = cuda ]; then
+    # A copy of the source: nvcc_wrapper's default architecture (Kokkos 4.6's is sm_70, which
+    # nvcc 13 no longer knows) must be this GPU's before CMake's first compiler check, and
+    # Kokkos 4.6 needs a patch for CUDA 13's runtime API
+    log "backend cuda: nvcc $cuda_version, Kokkos_ARCH_$arch ($sm)"
+    if [ ! -f "$prefix/kokkos-source/.prepared" ]; then
+      rm -rf "$prefix/kokkos-source"
+      cp -a "$ksrc" "$prefix/kokkos-source"
+      sed -i "s/^default_arch=.*/default_arch=\"$sm\"/" "$prefix/kokkos-source/bin/nvcc_wrapper"
+      if [ "$cuda_major" -ge 13 ] && [ "${kver%.*}" = 4.6 ]; then
+        cuda13_patch=$here/tools/kokkos/kokkos-4.6.1-cuda13.patch
+        if command -v patch >/dev/null; then
+          patch -d "$prefix/kokkos-source" -p1 <"$cuda13_patch" >/dev/null
+        else  # git apply outside a repository patches plain files too
+          (cd "$prefix/kokkos-source" && git apply -p1 "$cuda13_patch")
+        fi || die "kokkos-4.6.1-cuda13.patch does not apply to Kokkos $kver"
+      fi
+      touch "$prefix/kokkos-source/.prepared"
+    fi
+    ksrc="$prefix/kokkos-source"
+    compiler=(-D CMAKE_CXX_COMPILER="$ksrc/bin/nvcc_wrapper")
+  fi
   step "Kokkos configure" "$prefix/kokkos-configure.log" \
-    cmake -S "$ksrc" -B "$prefix/build-kokkos" "${kokkos_cmake_options[@]}" "${common[@]}"
+    cmake -S "$ksrc" -B "$prefix/build-kokkos" "${kokkos_cmake_options[@]}" "${common[@]}" "${compiler[@]}"
   step "Kokkos build" "$prefix/kokkos-build.log" cmake --build "$prefix/build-kokkos" -j "$jobs"
   step "Kokkos install" "$prefix/kokkos-install.log" cmake --install "$prefix/build-kokkos"
   t1=$(date +%s)
   step "LAMMPS configure" "$prefix/configure.log" \
     cmake -S "$src/cmake" -B "$prefix/build" "${lammps_cmake_options[@]}" "${common[@]}" \
-          -D Kokkos_DIR="$prefix/lib/cmake/Kokkos"
+          -D Kokkos_DIR="$prefix/lib/cmake/Kokkos" "${compiler[@]}"
   step "LAMMPS build" "$prefix/build.log" cmake --build "$prefix/build" -j "$jobs"
   step "LAMMPS install" "$prefix/install.log" cmake --install "$prefix/build"
   t2=$(date +%s)
   printf 'kokkos %s s\nlammps %s s\njobs %s\n' $((t1 - t0)) $((t2 - t1)) "$jobs" >"$prefix/build-times"
   printf '%s\n' "$src" >"$prefix/source-dir"
   printf '%s\n' "$ksrc" >"$prefix/kokkos-source-dir"
+  printf '%s\n' "$backend" >"$prefix/backend"
   touch "$prefix/.complete"
 else
   log "reusing the KOKKOS LAMMPS $version at $prefix"

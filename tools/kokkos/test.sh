@@ -7,19 +7,35 @@
 # builds against (tools/kokkos/README.md), so KOKKOS_SOURCE must name an unpacked Kokkos release.
 # Run it in every session that touches src/KOKKOS or the pair loop.
 #   KOKKOS_SOURCE=/path/to/kokkos-4.6.1 ETD_DPD_LAMMPS=trixie tools/kokkos/test.sh [ctest args]
-# Environment: as build_lammps_kokkos.sh, and ETD_DPD_KOKKOS_BUILD (default ./build-kokkos).
+# Environment: as build_lammps_kokkos.sh (ETD_DPD_KOKKOS_BACKEND=cuda: the package compiled with
+# that Kokkos's nvcc_wrapper, and the KOKKOS tests on 1 and 2 ranks sharing one GPU), and
+#   ETD_DPD_KOKKOS_BUILD   build folder (default ./build-kokkos, ./build-kokkos-cuda for cuda)
+#   ETD_DPD_CMAKE_ARGS     more arguments for the package's configure (where GTest, Boost or
+#                          Random123 are not installed: tools/kokkos/gpu.sh passes its own)
+#   ETD_DPD_BUILD_TARGETS  build these targets alone (default: all)
 # Extra arguments go to ctest (-L kokkos: the KOKKOS tests alone). Prints the LAMMPS it tested
 # against and ctest's summary; exits non-zero on a failure.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 prefix=$(bash "$here/tools/kokkos/build_lammps_kokkos.sh" | sed -n 's/^LAMMPS_KOKKOS_PREFIX=//p')
 [ -f "$prefix/.complete" ] || { echo "no complete KOKKOS LAMMPS at $prefix" >&2; exit 1; }
-build=${ETD_DPD_KOKKOS_BUILD:-$here/build-kokkos}
+backend=${ETD_DPD_KOKKOS_BACKEND:-openmp}
+build_default=$here/build-kokkos
+compiler=()
+if [ "$backend" = cuda ]; then
+  build_default=$here/build-kokkos-cuda
+  compiler=(-D CMAKE_CXX_COMPILER="$(cat "$prefix/kokkos-source-dir")/bin/nvcc_wrapper")
+fi
+build=${ETD_DPD_KOKKOS_BUILD:-$build_default}
+read -r -a extra_cmake <<<"${ETD_DPD_CMAKE_ARGS:-}"
+targets=()
+for target in ${ETD_DPD_BUILD_TARGETS:-}; do targets+=(--target "$target"); done
 mkdir -p "$build"
 cmake -S "$here" -B "$build" -D CMAKE_BUILD_TYPE=Release -D LAMMPS_SOURCE_DIR="$(cat "$prefix/source-dir")" \
-      -D LAMMPS_PREFIX="$prefix" -D ETD_DPD_KOKKOS=ON >"$build/configure.log" 2>&1 \
+      -D LAMMPS_PREFIX="$prefix" -D ETD_DPD_KOKKOS=ON "${compiler[@]}" "${extra_cmake[@]}" \
+      >"$build/configure.log" 2>&1 \
   || { tail -30 "$build/configure.log" >&2; exit 1; }
-cmake --build "$build" -j "${ETD_DPD_JOBS:-$(nproc)}" >"$build/build.log" 2>&1 || { grep -E "error|Error" -A5 "$build/build.log" | head -40 >&2; exit 1; }
+cmake --build "$build" -j "${ETD_DPD_JOBS:-$(nproc)}" "${targets[@]}" >"$build/build.log" 2>&1 || { grep -E "error|Error" -A5 "$build/build.log" | head -40 >&2; exit 1; }
 printf '[etd-dpd] KOKKOS leg: LAMMPS %s, Kokkos %s (%s)\n' \
   "$(sed -n 's/.*lammps-kokkos-\([^-]*\)-.*/\1/p' <<<"$prefix")" \
   "$(sed -n 's/.*KOKKOS styles against Kokkos \([^ ]*\).*/\1/p' "$build/configure.log")" "$prefix" >&2

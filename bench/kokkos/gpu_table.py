@@ -1,0 +1,84 @@
+#!/usr/bin/python3
+"""tools/kokkos/gpu.sh's results (gpu.jsonl, gpu-tests.jsonl) as the markdown table of
+bench/kokkos/results/gpu.md: atom-steps per second of each case at each size, atom time units per
+second (atom-steps/s x dt), and the two comparisons of issue 40: dpd/gen/kk against dpd/kk at the
+same dt (in atom-steps/s), and fix etd/kk scheme implicit against fix shardlow/kk each at its
+largest seed-checked step (in atom time units per second). Without runs it says so.
+
+Usage: python3 bench/kokkos/gpu_table.py gpu.jsonl [gpu-tests.jsonl] > gpu.md
+"""
+import json
+import os
+import sys
+
+CASES = {
+    "gen-nve": "dpd/gen/kk + fix nve",
+    "dpd-nve": "LAMMPS's dpd/kk + fix nve",
+    "etd-implicit": "fix etd/kk scheme implicit (dpd/gen)",
+    "shardlow": "fix shardlow/kk + fix nve (dpd/fdt/energy/kk)",
+    "etd-diagonal": "fix etd/kk scheme diagonal (dpd/gen/kk)",
+}
+COMPARISONS = (  # (case, against, measure, what)
+    ("gen-nve", "dpd-nve", "rate", "dpd/gen/kk over dpd/kk (atom-steps/s, same dt)"),
+    ("etd-implicit", "shardlow", "time", "implicit over shardlow/kk (atom time units/s, equal accuracy)"),
+)
+
+
+def read(path):
+    if not path or not os.path.exists(path):
+        return []
+    with open(path) as handle:
+        return [json.loads(line) for line in handle if line.strip()]
+
+
+def main(runs_path, tests_path=None):
+    lines = read(runs_path)
+    runs = [r for r in lines if r.get("kind") == "run" and "loop_s" in r]
+    failed = [r for r in lines if r.get("kind") == "run" and "error" in r]
+    tests = read(tests_path)
+    if not runs and not failed:
+        print("No GPU run yet: tools/kokkos/gpu.sh has not run on a machine with a GPU. Its table "
+              "comes here (tools/kokkos/README.md says how to run it).")
+        return
+    first = runs[0] if runs else failed[0]
+    print(f"tools/kokkos/gpu.sh on {first.get('device', '?')} ({first.get('backend', '?')} backend), "
+          f"LAMMPS {first.get('lammps', '?')} with KOKKOS. Groot-Warren fluid (n = 3, a = 25, "
+          "gamma = 4.5, s = 2, rc = 1, kBT = 1), m = 0.01; one run per case and size. Atom time "
+          "units/s = atom-steps/s x dt: the rate at which the run covers simulated time. The steps "
+          "of fix etd scheme implicit and fix shardlow are their largest seed-checked steps "
+          "(bench/accuracy/results/matrix.md, GW m = 0.01). fix etd/kk scheme implicit runs its "
+          "step and the pair loop on the host (README.md, KOKKOS section); fix shardlow/kk needs "
+          "an EOS fix, and fix eos/cv has no KOKKOS variant, so it too runs on the host.")
+    print()
+    for t in tests:
+        print(f"Equivalence tests (ctest -L {t['label']}, {t['backend']} backend): "
+              f"{t['total'] - t['failed']} of {t['total']} passed.")
+        print()
+    print("| case | atoms | dt | steps | loop s | atom-steps/s | atom time units/s |")
+    print("|---|---|---|---|---|---|---|")
+    rate, time = {}, {}
+    for r in runs:
+        atom_steps = r["natoms"] * r["steps"] / r["loop_s"]
+        rate[(r["case"], r["natoms"])] = atom_steps
+        time[(r["case"], r["natoms"])] = atom_steps * r["dt"]
+        steps = f"{r['steps']}{' (timeout)' if r.get('timed_out') else ''}"
+        print(f"| {CASES.get(r['case'], r['case'])} | {r['natoms']:,} | {r['dt']} | {steps} | "
+              f"{r['loop_s']:.3f} | {atom_steps:.3e} | {atom_steps * r['dt']:.3e} |")
+    for r in failed:
+        print(f"| {CASES.get(r['case'], r['case'])} | {r['natoms']:,} | | failed ({r['error']}) | | | |")
+    print()
+    print("| comparison | " + " | ".join(f"{n:,} atoms" for n in sorted({r["natoms"] for r in runs})) + " |")
+    print("|---|" + "---|" * len({r["natoms"] for r in runs}))
+    for case, against, measure, what in COMPARISONS:
+        values = rate if measure == "rate" else time
+        cells = []
+        for n in sorted({r["natoms"] for r in runs}):
+            if (case, n) in values and (against, n) in values:
+                cells.append(f"{values[(case, n)] / values[(against, n)]:.2f}")
+            else:
+                cells.append("-")
+        print(f"| {what} | " + " | ".join(cells) + " |")
+
+
+if __name__ == "__main__":
+    main(*sys.argv[1:3])

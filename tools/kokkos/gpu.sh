@@ -1,0 +1,220 @@
+#!/usr/bin/env bash
+# The GPU leg of issue 40 in one command. On a machine with an NVIDIA GPU it
+#   build  builds Kokkos (shared, CUDA + Serial, Kokkos_ARCH_HOPPER90) and a KOKKOS LAMMPS against
+#          it (build_lammps_kokkos.sh with ETD_DPD_KOKKOS_BACKEND=cuda), then the package with
+#          ETD_DPD_KOKKOS=ON (test.sh; the plugin and test_kokkos_styles alone);
+#   test   runs the equivalence tests on the GPU (ctest -L kokkos: test_kokkos_styles on 1 and 2
+#          ranks, -k on g 1);
+#   bench  measures atom-steps per second on the Groot-Warren fluid (bench/kokkos/
+#          in.kokkos_throughput: n = 3, a = 25, gamma = 4.5, s = 2, rc = 1, kBT = 1, m = 0.01) at
+#          each size, for the cases (--cases):
+#            gen-nve       dpd/gen/kk + fix nve, dt 0.0007 (stock's largest step at m = 0.01)
+#            dpd-nve       LAMMPS's dpd/kk + fix nve, the same dt
+#            etd-implicit  fix etd/kk scheme implicit, dt 0.005 \  each at its largest
+#            shardlow      fix shardlow/kk + nve, dt 0.004     /  seed-checked step
+#            etd-diagonal  fix etd/kk scheme diagonal, dt 0.0005  (accuracy matrix, GW m = 0.01)
+#          The implicit scheme and shardlow are compared in simulated time x atoms per second
+#          (atom-steps/s x dt): equal accuracy, bench/accuracy/results/matrix.md.
+# Results: RESULTS/gpu.jsonl (one line a run), RESULTS/gpu-tests.jsonl (the tests' count) and
+# RESULTS/gpu.md (bench/kokkos/gpu_table.py); with $OUT set (the device tool's folder that comes
+# back) they and logs.tar.gz are copied there after each step. RESULTS: bench/kokkos/results with
+# cuda, ./build-gpu-results with openmp.
+#
+# Needs: nvcc 12.0 or newer with a host compiler it accepts (CUDA 13 with Kokkos 4.6: the source
+# is patched, tools/kokkos/kokkos-4.6.1-cuda13.patch), CMake 3.16 or newer, MPI (mpicxx, mpirun).
+# A machine without network takes the sources from tools/kokkos/pack_sources.sh, in
+# ./build-gpu-sources (ETD_DPD_GPU_SOURCES), and Boost, Random123 and GoogleTest from there where
+# it has none of its own.
+#
+# Usage: tools/kokkos/gpu.sh [--phases build,test,bench] [--sizes 32000,256000,2048000]
+#          [--steps 500] [--warmup 20] [--timeout 20] [--cases LIST] [--results DIR]
+#   --steps    timed steps per run; a run also stops after --timeout seconds of its loop (LAMMPS's
+#              timer timeout, the warm-up likewise) and the steps done are counted
+# Environment: as build_lammps_kokkos.sh and test.sh. ETD_DPD_KOKKOS_BACKEND=openmp (default
+# cuda) runs the same phases on the OpenMP KOKKOS LAMMPS with ETD_DPD_THREADS threads (default
+# 1): the script's check on a machine without a GPU.
+#
+# On the device tool, after tools/kokkos/pack_sources.sh here (one call, on the H100):
+#   run(command="tools/kokkos/gpu.sh", carry=["build-gpu-sources"], timeout_s=600)
+# A call stopped at its limit during the build: the same call again at once, while the machine is
+# warm (30 s); the build resumes where it stopped. To repeat only the measurements there:
+#   run(command="tools/kokkos/gpu.sh --phases test,bench", carry=["build-gpu-sources"],
+#       timeout_s=600)
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+log() { printf '[etd-dpd %s] %s\n' "$(date +%H:%M:%S)" "$*" >&2; }
+die() { printf '[etd-dpd] ERROR: %s\n' "$*" >&2; exit 1; }
+
+phases=build,test,bench
+sizes=32000,256000,2048000
+steps=500
+warmup=20
+timeout=20
+cases=gen-nve,dpd-nve,etd-implicit,shardlow,etd-diagonal
+results=
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --phases) phases=$2 ;; --sizes) sizes=$2 ;; --steps) steps=$2 ;; --warmup) warmup=$2 ;;
+    --timeout) timeout=$2 ;; --cases) cases=$2 ;; --results) results=$2 ;;
+    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+    *) die "unknown argument $1 (--help)" ;;
+  esac
+  shift 2
+done
+for case_name in ${cases//,/ }; do
+  case "$case_name" in gen-nve|dpd-nve|etd-implicit|shardlow|etd-diagonal) ;;
+    *) die "unknown case $case_name (--help)" ;; esac
+done
+export ETD_DPD_KOKKOS_BACKEND=${ETD_DPD_KOKKOS_BACKEND:-cuda}
+backend=$ETD_DPD_KOKKOS_BACKEND
+if [ -z "$results" ]; then
+  if [ "$backend" = cuda ]; then results=$root/bench/kokkos/results; else results=$root/build-gpu-results; fi
+fi
+logs=$root/build-gpu-results/logs
+mkdir -p "$results" "$logs"
+has() { [[ ",$phases," == *",$1,"* ]]; }
+table() { python3 "$root/bench/kokkos/gpu_table.py" "$results/gpu.jsonl" "$results/gpu-tests.jsonl" >"$results/gpu.md"; }
+copy_out() {  # results and logs to the device tool's folder (8 files at most), after each step:
+  [ -n "${OUT:-}" ] || return 0  # a command stopped at its time limit keeps what is there
+  cp "$results"/gpu*.jsonl "$results"/gpu.md "$OUT"/ 2>/dev/null || true
+  tar -C "$logs" -czf "$OUT/logs.tar.gz" . 2>/dev/null || true
+}
+trap copy_out EXIT
+
+# ---- what the machine has ----------------------------------------------------------------
+command -v cmake >/dev/null || die "no cmake"
+if ! command -v mpicxx >/dev/null || ! command -v mpirun >/dev/null; then
+  die "no MPI (mpicxx and mpirun): the package and its tests build against MPI"
+fi
+if [ "$backend" = cuda ]; then
+  command -v nvcc >/dev/null || { [ -x /usr/local/cuda/bin/nvcc ] && export PATH=/usr/local/cuda/bin:$PATH; } \
+    || die "no nvcc: the CUDA toolkit, 12.0 or newer"
+  cuda_version=$(nvcc --version | sed -n 's/.*release \([0-9]*\.[0-9]*\).*/\1/p')
+  [ "${cuda_version%%.*}" -ge 12 ] \
+    || die "nvcc $cuda_version: Kokkos 4.6 for Hopper (sm_90) needs CUDA 12.0 or newer (13.x is patched)"
+  log "nvcc $cuda_version; host compiler $(c++ --version | head -1); $(cmake --version | head -1)"
+  if has test || has bench; then
+    nvidia-smi -L >&2 || die "no GPU (nvidia-smi -L failed): the test and bench phases need one"
+  fi
+fi
+
+# ---- sources: the packed ones where none is named -------------------------------------------
+sources=${ETD_DPD_GPU_SOURCES:-$root/build-gpu-sources}
+unpack() {  # NAME: $sources/NAME.tar.xz into $sources/unpacked, once
+  [ -d "$sources/unpacked/$1" ] || { mkdir -p "$sources/unpacked" && tar -C "$sources/unpacked" -xJf "$sources/$1.tar.xz"; }
+}
+if [ -z "${KOKKOS_SOURCE:-}" ]; then
+  [ -f "$sources/kokkos.tar.xz" ] || die "set KOKKOS_SOURCE, or run tools/kokkos/pack_sources.sh first"
+  unpack kokkos; export KOKKOS_SOURCE=$sources/unpacked/kokkos
+fi
+if [ -z "${LAMMPS_SOURCE:-}" ] && [ -z "${ETD_DPD_LAMMPS:-}" ] && [ -f "$sources/lammps.tar.xz" ]; then
+  unpack lammps; export LAMMPS_SOURCE=$sources/unpacked/lammps
+fi
+compiles() { printf '%s\nint main() { return 0; }\n' "$1" | c++ -std=c++17 -x c++ - "${@:2}" -o /dev/null 2>/dev/null; }
+cmake_args=()
+if ! compiles '#include <boost/random/normal_distribution.hpp>' || ! compiles '#include <Random123/philox.h>'; then
+  [ -f "$sources/deps.tar.xz" ] || die "no Boost or Random123 headers, and no $sources/deps.tar.xz"
+  unpack deps; log "Boost and Random123 from $sources/unpacked/deps"
+  cmake_args+=(-D "BOOST_RANDOM_INCLUDE_DIR=$sources/unpacked/deps/include"
+               -D "RANDOM123_INCLUDE_DIR=$sources/unpacked/deps/include")
+fi
+if ! compiles '#include <gtest/gtest.h>' -lgtest -pthread; then
+  [ -f "$sources/deps.tar.xz" ] || die "no GoogleTest, and no $sources/deps.tar.xz"
+  unpack deps
+  gtest=$sources/unpacked/gtest
+  if [ ! -f "$gtest/.complete" ]; then
+    log "building GoogleTest into $gtest"
+    { cmake -S "$sources/unpacked/deps/googletest" -B "$gtest/build" -D CMAKE_BUILD_TYPE=Release \
+        -D BUILD_GMOCK=OFF -D CMAKE_INSTALL_PREFIX="$gtest" -D CMAKE_INSTALL_LIBDIR=lib \
+      && cmake --build "$gtest/build" -j "${ETD_DPD_JOBS:-$(nproc)}" && cmake --install "$gtest/build"; } \
+      >"$logs/gtest.log" 2>&1 || { tail -20 "$logs/gtest.log" >&2; die "GoogleTest build failed"; }
+    touch "$gtest/.complete"
+  fi
+  cmake_args+=(-D "GTEST_ROOT=$gtest" -D "CMAKE_PREFIX_PATH=$gtest")
+fi
+export ETD_DPD_CMAKE_ARGS="${cmake_args[*]}"
+export ETD_DPD_BUILD_TARGETS="etddpd test_kokkos_styles"
+
+# ---- build, test --------------------------------------------------------------------------
+t0=$(date +%s)
+prefix=$(bash "$root/tools/kokkos/build_lammps_kokkos.sh" 2>"$logs/lammps.log" | sed -n 's/^LAMMPS_KOKKOS_PREFIX=//p') \
+  || { tail -40 "$logs/lammps.log" >&2; die "the KOKKOS LAMMPS did not build (logs in $logs)"; }
+[ -f "$prefix/.complete" ] || die "no complete KOKKOS LAMMPS at $prefix"
+log "KOKKOS LAMMPS ($backend): $prefix ($(( $(date +%s) - t0 )) s)"
+if has build; then
+  bash "$root/tools/kokkos/test.sh" -L kokkos -N >"$logs/build.log" 2>&1 \
+    || { tail -40 "$logs/build.log" >&2; die "the package did not build (log: $logs/build.log)"; }
+  log "package built ($(( $(date +%s) - t0 )) s in all)"
+  copy_out
+fi
+if has test; then
+  status=0
+  bash "$root/tools/kokkos/test.sh" -L kokkos >"$logs/test.log" 2>&1 || status=$?
+  grep -E "tests passed|Passed|Failed|\*\*\*" "$logs/test.log" >&2 || tail -20 "$logs/test.log" >&2
+  summary=$(sed -n 's/.*tests passed, \([0-9]*\) tests failed out of \([0-9]*\).*/\1 \2/p' "$logs/test.log")
+  read -r failed total <<<"${summary:-0 0}"
+  printf '{"kind": "tests", "backend": "%s", "label": "kokkos", "total": %d, "failed": %d, "exit": %d}\n' \
+    "$backend" "$total" "$failed" "$status" >"$results/gpu-tests.jsonl"
+  log "equivalence tests: $((total - failed)) of $total passed"
+  copy_out
+fi
+
+# ---- bench --------------------------------------------------------------------------------
+if has bench; then
+  build=$root/build-kokkos; [ "$backend" = cuda ] && build=$root/build-kokkos-cuda
+  build=${ETD_DPD_KOKKOS_BUILD:-$build}
+  plugin=$build/etddpdplugin.so
+  [ -f "$plugin" ] || die "no plugin at $plugin: run the build phase first"
+  if [ "$backend" = cuda ]; then
+    kokkos=(-k on g 1 -sf kk)
+    device=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+  else
+    threads=${ETD_DPD_THREADS:-1}
+    kokkos=(-k on t "$threads" -sf kk)
+    device="OpenMP, $threads of $(nproc) cores"  # nproc before OMP_NUM_THREADS, which it follows
+    export OMP_PROC_BIND=false OMP_NUM_THREADS=$threads
+  fi
+  # the plugin's styles need half lists and newton on, which a GPU does not default to; LAMMPS's
+  # styles run with the package's defaults for the device
+  plugin_package=(-pk kokkos neigh half newton on)
+  # case | pair | integrator | dt
+  table=(
+    "gen-nve|dpd/gen|nve|0.0007" "dpd-nve|dpd|nve|0.0007" "etd-implicit|dpd/gen|implicit|0.005"
+    "shardlow|dpd/fdt/energy|shardlow|0.004" "etd-diagonal|dpd/gen|etd|0.0005"
+  )
+  out=$results/gpu.jsonl
+  : >"$out"
+  lammps_version=$(sed -n 's/.*lammps-kokkos[a-z-]*-\([^-]*\)-.*/\1/p' <<<"$prefix")
+  for natoms in ${sizes//,/ }; do
+    for case_name in ${cases//,/ }; do
+      row=$(printf '%s\n' "${table[@]}" | grep "^$case_name|")
+      IFS='|' read -r _ pair integrator dt <<<"$row"
+      package=(); [ "$pair" = dpd ] || [ "$pair" = dpd/fdt/energy ] || package=("${plugin_package[@]}")
+      runlog=$logs/bench-$case_name-$natoms.log
+      t1=$(date +%s)
+      status=0
+      timeout $((2 * timeout + 300)) "$prefix/bin/lmp" -in "$root/bench/kokkos/in.kokkos_throughput" \
+        -var plugin "$plugin" -var pair "$pair" -var integrator "$integrator" -var natoms "$natoms" \
+        -var mass 0.01 -var dt "$dt" -var steps "$steps" -var warmup "$warmup" -var timeout "$timeout" \
+        "${kokkos[@]}" "${package[@]}" -log "$runlog" -screen none >/dev/null 2>&1 || status=$?
+      loop=$(awk '/^BENCH/{b=1} b&&/^Loop time/{print $4, $9; exit}' "$runlog")
+      style=$(awk '/pair [a-z\/]+, perpetual/{print $3; exit}' "$runlog")
+      if [ "$status" != 0 ] || [ -z "$loop" ]; then
+        log "$case_name $natoms atoms: FAILED (exit $status; $runlog)"
+        printf '{"kind": "run", "case": "%s", "natoms": %d, "error": "exit %d"}\n' "$case_name" "$natoms" "$status" >>"$out"
+        table; copy_out
+        continue
+      fi
+      read -r loop_s done_steps <<<"$loop"
+      printf '{"kind": "run", "backend": "%s", "device": "%s", "case": "%s", "pair_style": "%s", "integrator": "%s", "natoms": %d, "mass": 0.01, "dt": %s, "steps": %d, "loop_s": %s, "timed_out": %s, "lammps": "%s", "kokkos": "%s"}\n' \
+        "$backend" "$device" "$case_name" "${style%,}" "$integrator" "$natoms" "$dt" "$done_steps" "$loop_s" \
+        "$([ "$done_steps" -lt "$steps" ] && echo true || echo false)" "$lammps_version" "${kokkos[*]} ${package[*]}" >>"$out"
+      log "$case_name $natoms atoms: $done_steps steps in $loop_s s ($(( $(date +%s) - t1 )) s with set-up)"
+      table; copy_out
+    done
+  done
+fi
+if has test || has bench; then
+  table
+  cat "$results/gpu.md"
+fi
