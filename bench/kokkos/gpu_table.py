@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """tools/kokkos/gpu.sh's results (gpu.jsonl, gpu-tests.jsonl) as the markdown table of
 bench/kokkos/results/gpu.md: atom-steps per second of each case at each size, atom time units per
-second (atom-steps/s x dt), and the two comparisons of issue 40: dpd/gen/kk against dpd/kk at the
+second (atom-steps/s x dt), and the two comparisons that matter on a GPU: dpd/gen/kk against dpd/kk at the
 same dt (in atom-steps/s), and fix etd/kk scheme implicit against fix shardlow/kk each at its
 largest seed-checked step (in atom time units per second). Without runs it says so.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The GPU leg of issue 40 in one command. On a machine with an NVIDIA GPU it
+# The GPU leg of the KOKKOS styles in one command. On a machine with an NVIDIA GPU it
 #   build  builds Kokkos (shared, CUDA + Serial, Kokkos_ARCH_HOPPER90) and a KOKKOS LAMMPS against
 #          it (build_lammps_kokkos.sh with ETD_DPD_KOKKOS_BACKEND=cuda), then the package with
 #          ETD_DPD_KOKKOS=ON (test.sh; the plugin and test_kokkos_styles alone);
