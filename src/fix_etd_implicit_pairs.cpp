@@ -92,13 +92,7 @@ void FixETDImplicit::refresh_own_pairs()
   for (int i = 0; i < atom->nlocal; i++) {
     double dsq = 0.0;
     for (int k = 0; k < 3; k++) dsq += std::pow(x[i][k] - own.positions[3 * i + k], 2);
-    const double d = std::sqrt(dsq);
-    if (d > top[0]) {
-      top[1] = top[0];
-      top[0] = d;
-    } else if (d > top[1]) {
-      top[1] = d;
-    }
+    etd::keep_two_largest(top, std::sqrt(dsq));
   }
   const double local[3] = {0.0, top[0], top[1]};
   double global[3];

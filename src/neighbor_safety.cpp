@@ -84,13 +84,7 @@ void NeighborSafety::largest_displacements(LAMMPS *lmp, int groupbit, double top
       const double d = x[i][k] + (lead ? (*lead)[3 * i + k] : 0.0) - build_positions[3 * i + k];
       dsq += d * d;
     }
-    const double d = std::sqrt(dsq);
-    if (d > top[0]) {
-      top[1] = top[0];
-      top[0] = d;
-    } else if (d > top[1]) {
-      top[1] = d;
-    }
+    keep_two_largest(top, std::sqrt(dsq));
   }
 }
 

@@ -32,6 +32,17 @@ class LAMMPS;
 
 namespace etd {
 
+// top[0] >= top[1]: the two largest of the values seen so far, d among them
+inline void keep_two_largest(double top[2], double d)
+{
+  if (d > top[0]) {
+    top[1] = top[0];
+    top[0] = d;
+  } else if (d > top[1]) {
+    top[1] = d;
+  }
+}
+
 // The number of steps LAMMPS may go between two looks at the atoms' displacements.
 inline int unchecked_steps(int every, int delay)
 {
