@@ -37,9 +37,9 @@ which=${2:-GW}
 # another step, impv* the implicit scheme with the options, others the default implicit
 # scheme, diag* the diagonal scheme, e.g. "ref0.0000075:0.0000075"): the diagonal scheme at its
 # largest step where the matrix has one; P m = 0.001 the implicit scheme at 0.001 and 0.0005;
-# GW m = 1 stock and the diagonal scheme at 0.003 and the implicit scheme at 0.04 (at their
-# equilibrium steps the viscosity is 3.8, 2.1 and 2.0 % low), GW m = 0.1 the implicit scheme at
-# 0.015 and 0.01 (2.0 % low at 0.02) and the reference's integrator at 0.0001 (its
+# GW m = 1 stock and the diagonal scheme at 0.003 and the implicit scheme at 0.04, 0.03 and 0.02
+# (its viscosity from the stress grows with its step), GW m = 0.1 the implicit scheme at 0.015,
+# 0.01, 0.0075 and 0.005 and the reference's integrator at 0.0001 (its
 # convergence), P m = 1 the implicit scheme at 0.06 and 0.04 (+3.2 % at 0.08); m = 0.01 the
 # default at the step the seed check confirms; m = 0.001 the options at the default's step (at
 # 0.0015 their viscosity is 3-4 % high); P m = 0.1 at 0.015 and 0.01 (at 0.02 its viscosity is
@@ -54,9 +54,9 @@ case "$which:$mass" in
   GW:0.001) prefix="m0.001."; steps=(0.00003 0.0001 0.001 0.0015)
     extras="impv0.001:0.001 diag0.0001:0.0001" ;;
   GW:1) prefix="m1."; steps=(0.001 0.005 0.06 -)
-    extras="stock0.003:0.003 imp0.04:0.04 diag0.005:0.005 diag0.003:0.003" ;;
+    extras="stock0.003:0.003 imp0.04:0.04 imp0.03:0.03 imp0.02:0.02 diag0.005:0.005 diag0.003:0.003" ;;
   GW:0.1) prefix="m0.1."; steps=(0.0003 0.005 0.02 -)
-    extras="diag0.003:0.003 imp0.015:0.015 imp0.01:0.01 ref0.0001:0.0001" ;;
+    extras="diag0.003:0.003 imp0.015:0.015 imp0.01:0.01 imp0.0075:0.0075 imp0.005:0.005 ref0.0001:0.0001" ;;
   P:1) prefix="P.m1."; steps=(0.001 0.003 0.08 -); extras="imp0.06:0.06 imp0.04:0.04"; ref_integ=nve ;;
   P:0.1) prefix="P.m0.1."; steps=(0.0003 0.002 0.02 -); extras="imp0.015:0.015 imp0.01:0.01 diag0.003:0.003" ;;
   P:0.01) prefix="P.m0.01."; steps=(0.0001 0.0003 0.005 0.004)
