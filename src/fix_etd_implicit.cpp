@@ -200,7 +200,9 @@ void FixETDImplicit::request_neighbor_list()
                  "Fix etd neighbors own is not supported with {}: use neighbors lammps (or leave "
                  "the keyword out)",
                  unsupported);
-    own.active = !unsupported && dpd_styles.front()->use_external_pairs(this);
+    const bool wanted = options.pair_search == etd::ImplicitOptions::PairSearch::own ||
+        own_pairs_pay();
+    own.active = wanted && !unsupported && dpd_styles.front()->use_external_pairs(this);
   }
   if (own.active) {
     list = nullptr;    // no LAMMPS list for the fix: it searches the pairs itself

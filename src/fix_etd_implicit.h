@@ -79,6 +79,7 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator, public etd
     double margin = 0.0;              // searched out to cutoff + margin
   } own;
   const char *own_pairs_unsupported() const;
+  bool own_pairs_pay() const;    // the default's choice: the search's cells stay sparse
   void search_own_pairs(double margin);
   void refresh_own_pairs();
   etd::PairListView step_pairs() const;    // own.view, or LAMMPS's list
