@@ -14,6 +14,7 @@
 #include "implicit_partners.h"
 #include "neighbor_safety.h"
 
+#include <functional>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -61,7 +62,7 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator, public etd
     return (own.active && step == own.step) ? &own.view : nullptr;
   }
 
- private:
+ protected:    // (the KOKKOS variant, fix_etd_implicit_kokkos.h, runs the solve in kernels)
   etd::ImplicitOptions options;
   double dt;
   class NeighList *list;    // LAMMPS's, where the scheme does not search the pairs itself
@@ -152,11 +153,17 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator, public etd
   bool overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity,
                         bool singular_ok);
   void overdamped_split(const std::vector<double> &velocity, const std::vector<double> &impulse);
+  // the linear solve alone (solve() keeps the counts and reports)
+  virtual etd::SolverResult solve_system(const std::vector<double> &rhs,
+                                         std::vector<double> &solution, double mass_weight,
+                                         double friction_weight, bool deflate,
+                                         const std::vector<double> *start,
+                                         const std::vector<double> *start_friction);
+  std::function<void(double *, int)> sum_over_ranks() const;
   bool solve(const std::vector<double> &rhs, std::vector<double> &solution, double mass_weight,
              double friction_weight, bool deflate, bool singular_ok = false,
              const std::vector<double> *start = nullptr,
              const std::vector<double> *start_friction = nullptr);
-  void report_solve(const etd::SolverResult &result, double mass_weight, bool singular_ok);
 };
 
 }    // namespace LAMMPS_NS

@@ -12,13 +12,11 @@
 
 using namespace LAMMPS_NS;
 
-// (mass_weight M + friction_weight G) x = rhs over the group's atoms on this rank, atoms
-// outside the group held at zero (their velocities are already in rhs). With 'deflate' the
-// uniform translation (null space of G) is projected out of rhs and of the solution.
-bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double> &solution,
-                           double mass_weight, double friction_weight, bool deflate,
-                           bool singular_ok, const std::vector<double> *start,
-                           const std::vector<double> *start_friction)
+etd::SolverResult FixETDImplicit::solve_system(const std::vector<double> &rhs_in,
+                                               std::vector<double> &solution, double mass_weight,
+                                               double friction_weight, bool deflate,
+                                               const std::vector<double> *start,
+                                               const std::vector<double> *start_friction)
 {
   const int *mask = atom->mask;
   assembly.accumulate_blocks(diagonal, 2 * dofs, atom->nlocal);    // the preconditioner's
@@ -38,16 +36,33 @@ bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double
     gather_operand(u, true);
     assembly.accumulate_friction(operand.data(), out, atom->nlocal, weight);
   };
-  auto global_sum = [this](double *values, int count) {
-    double sums[16];    // the solver sums at most 9 values at once
+  return etd::solve_friction_system(system, mobile, apply_friction, sum_over_ranks(),
+                                    rhs_in.data(), solution, options.tolerance,
+                                    options.max_iterations, work.solve,
+                                    start ? start->data() : nullptr,
+                                    (start && start_friction) ? start_friction->data() : nullptr);
+}
+
+// sums count values over all ranks, in place (the solvers sum at most 9 at once)
+std::function<void(double *, int)> FixETDImplicit::sum_over_ranks() const
+{
+  return [this](double *values, int count) {
+    double sums[16];
     MPI_Allreduce(values, sums, count, MPI_DOUBLE, MPI_SUM, world);
     for (int k = 0; k < count; k++) values[k] = sums[k];
   };
-  const etd::SolverResult result = etd::solve_friction_system(
-      system, mobile, apply_friction, global_sum, rhs_in.data(), solution, options.tolerance,
-      options.max_iterations, work.solve, start ? start->data() : nullptr,
-      (start && start_friction) ? start_friction->data() : nullptr);
+}
 
+// (mass_weight M + friction_weight G) x = rhs over the group's atoms on this rank, atoms
+// outside the group held at zero (their velocities are already in rhs). With 'deflate' the
+// uniform translation (null space of G) is projected out of rhs and of the solution.
+bool FixETDImplicit::solve(const std::vector<double> &rhs_in, std::vector<double> &solution,
+                           double mass_weight, double friction_weight, bool deflate,
+                           bool singular_ok, const std::vector<double> *start,
+                           const std::vector<double> *start_friction)
+{
+  const etd::SolverResult result = solve_system(rhs_in, solution, mass_weight, friction_weight,
+                                                deflate, start, start_friction);
   last_iterations = result.iterations;
   last_residual = result.relative_residual;
   iterations_sum += result.iterations;

@@ -7,7 +7,7 @@
 #include "dpd_pair_interface.h"
 #include "error.h"
 #include "etd_coefficients.h"
-#include "fix_etd_implicit.h"
+#include "fix_etd_implicit_kokkos.h"
 #include "fix_etd_options.h"
 #include "force.h"
 #include "lammpsplugin.h"
@@ -146,10 +146,11 @@ template class FixETDDiagonalKokkos<LMPHostType>;
 }    // namespace LAMMPS_NS
 
 namespace {
-// scheme implicit: the CPU class (it runs on the host; its pair loop is the style's host loop)
+// scheme implicit: the CPU scheme with its solve in kernels (fix_etd_implicit_kokkos.h)
 template <class DeviceType> Fix *create_fix_etd_kokkos(LAMMPS *lmp, int narg, char **arg)
 {
-  if (etd::fix_etd_scheme_is_implicit(lmp, narg, arg)) return new FixETDImplicit(lmp, narg, arg);
+  if (etd::fix_etd_scheme_is_implicit(lmp, narg, arg))
+    return new FixETDImplicitKokkos<DeviceType>(lmp, narg, arg);
   return new FixETDDiagonalKokkos<DeviceType>(lmp, narg, arg);
 }
 }    // namespace

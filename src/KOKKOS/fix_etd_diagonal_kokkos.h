@@ -3,7 +3,7 @@
 // with the friction diagonal of the pair style) runs in Kokkos kernels on the atoms' device
 // arrays; it needs the friction diagonal from a KOKKOS pair style (dpd/gen/kk) that is the only
 // DPD style. Other options run the CPU fix's step on the host (a WARNING at init names why),
-// with the same results. fix etd/kk scheme implicit is the CPU implicit scheme (etd_dpd_plugin.cpp).
+// with the same results. fix etd/kk scheme implicit: fix_etd_implicit_kokkos.h.
 #ifndef ETD_FIX_ETD_DIAGONAL_KOKKOS_H
 #define ETD_FIX_ETD_DIAGONAL_KOKKOS_H
 

@@ -6,6 +6,7 @@
 #define ETD_FRICTION_SOLVE_H
 
 #include "conjugate_gradient.h"
+#include "host_device.h"
 
 #include <vector>
 
@@ -14,7 +15,7 @@ namespace etd {
 // Inverse of the symmetric 3x3 block (shift I + scale B) into 9 values. A nearly singular
 // block (an atom with one or two partners in the zero-mass limit: no friction across their
 // directions) falls back to the inverse of its diagonal; false if even that is zero.
-inline bool invert_block(const double *block, double shift, double scale, double *inverse)
+ETD_HOST_DEVICE inline bool invert_block(const double *block, double shift, double scale, double *inverse)
 {
   const double a = shift + scale * block[0], d = shift + scale * block[1],
                f = shift + scale * block[2];

@@ -1,0 +1,416 @@
+// ETD-DPD: the implicit scheme's friction solve, (mass_weight M + friction_weight G) x = b, in
+// Kokkos kernels: the block-Jacobi preconditioner, G applied atom by atom, and the same
+// single-reduction conjugate gradients as conjugate_gradient.h, for translation (3 unknowns an
+// atom). Pure Kokkos (no LAMMPS), so a unit test compares it with the CPU solve directly.
+//
+// G is applied per owned atom over the pairs it takes part in (an incidence list built with the
+// pairs), so no two threads write one atom and every sum has a fixed order: a thread count
+// changes nothing but the reductions' rounding. Vectors over the partners (owned atoms, then
+// one slot per remote atom, implicit_partners.h) have their slots filled through the caller's
+// exchange, on the host, once per application of G (none on one rank).
+#ifndef ETD_FRICTION_SOLVE_KOKKOS_H
+#define ETD_FRICTION_SOLVE_KOKKOS_H
+
+#include "friction_operator.h"
+#include "friction_solve.h"
+
+#include <Kokkos_Core.hpp>
+
+#include <functional>
+#include <vector>
+
+namespace etd {
+
+namespace kokkos_cg {
+// the sums of one iteration, in conjugate_gradient.h's order (cg_detail)
+enum { RZ, WZ, RR, RW, RS, WW, WS, SS, BB, NSUMS };
+}    // namespace kokkos_cg
+
+template <class DeviceType> class FrictionSolveKokkos {
+ public:
+  using execution_space = typename DeviceType::execution_space;
+  using Values = Kokkos::View<double *, DeviceType>;
+  using Indices = Kokkos::View<int *, DeviceType>;
+  using Geometry = Kokkos::View<float *[4], Kokkos::LayoutRight, DeviceType>;
+  // fills the slots [3 nowned, 3 npartners) of a host array of partner values from their owners
+  using Exchange = std::function<void(double *)>;
+  // sums count values (at most 9) over the ranks, in place
+  using GlobalSum = std::function<void(double *, int)>;
+
+  // The step's pairs (i owned, j a partner index; as FrictionPairAssembly holds them) over
+  // nowned owned atoms and npartners partners; the incidence list is built here, on the host.
+  void set_pairs(const std::vector<FrictionPair> &pairs, int nowned, int npartners)
+  {
+    nowned_ = nowned;
+    npartners_ = npartners;
+    const int npairs = static_cast<int>(pairs.size());
+    resize(pair_atoms_, 2 * npairs);
+    resize(geometry_, npairs);
+    resize(offsets_, nowned + 1);
+    auto h_atoms = Kokkos::create_mirror_view(pair_atoms_);
+    auto h_geometry = Kokkos::create_mirror_view(geometry_);
+    auto h_offsets = Kokkos::create_mirror_view(offsets_);
+    for (int a = 0; a <= nowned; a++) h_offsets(a) = 0;
+    for (int p = 0; p < npairs; p++) {
+      const FrictionPair &pair = pairs[p];
+      h_atoms(2 * p) = pair.i;
+      h_atoms(2 * p + 1) = pair.j;
+      for (int k = 0; k < 3; k++) h_geometry(p, k) = pair.e[k];
+      h_geometry(p, 3) = pair.friction;
+      h_offsets(pair.i + 1)++;
+      if (pair.j < nowned) h_offsets(pair.j + 1)++;
+    }
+    for (int a = 0; a < nowned; a++) h_offsets(a + 1) += h_offsets(a);
+    const int entries = h_offsets(nowned);
+    resize(incidence_, entries);
+    auto h_incidence = Kokkos::create_mirror_view(incidence_);
+    fill_.assign(h_offsets.data(), h_offsets.data() + nowned);
+    // +(p + 1): the atom is the pair's i; -(p + 1): its j
+    for (int p = 0; p < npairs; p++) {
+      h_incidence(fill_[pairs[p].i]++) = p + 1;
+      if (pairs[p].j < nowned) h_incidence(fill_[pairs[p].j]++) = -(p + 1);
+    }
+    Kokkos::deep_copy(pair_atoms_, h_atoms);
+    Kokkos::deep_copy(geometry_, h_geometry);
+    Kokkos::deep_copy(offsets_, h_offsets);
+    Kokkos::deep_copy(incidence_, h_incidence);
+  }
+
+  // Solves over the 3 nowned unknowns; atoms with mobile[a] = 0, or with neither mass nor
+  // friction, are held at zero. inertia, b, x: 3 nowned values; start (optional): the start
+  // over the owned atoms (else the block-Jacobi solution); start_friction (optional, with
+  // start): G start, which saves one application of G. As solve_friction_system() without
+  // deflation.
+  SolverResult solve(const double *inertia, const int *mobile, const double *b, double mass_weight,
+                     double friction_weight, double tolerance, int max_iterations,
+                     const Exchange &exchange, const GlobalSum &global_sum, double *x,
+                     const double *start = nullptr, const double *start_friction = nullptr)
+  {
+    const int n = 3 * nowned_;
+    mass_weight_ = mass_weight;
+    friction_weight_ = friction_weight;
+    exchange_ = &exchange;
+    upload(inertia_, inertia, n);
+    upload(b_, b, n);
+    resize(mobile_, nowned_);
+    {
+      Kokkos::View<const int *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> given(
+          mobile, nowned_);
+      Kokkos::deep_copy(Kokkos::subview(mobile_, Kokkos::make_pair(0, nowned_)), given);
+    }
+    for (Values *v : {&r_, &p_, &w_, &s_}) resize(*v, n);
+    for (Values *v : {&z_, &x_}) resize(*v, 3 * npartners_);
+    resize(inverse_, 9 * nowned_);
+    resize(held_, n);
+    Kokkos::deep_copy(p_, 0.0);
+    Kokkos::deep_copy(s_, 0.0);
+    Kokkos::deep_copy(z_, 0.0);
+    Kokkos::deep_copy(x_, 0.0);
+    precondition_setup();
+    start_vector(start, start_friction, n);
+
+    using namespace kokkos_cg;
+    SolverResult result;
+    double sums[NSUMS];
+    precondition();
+    apply_and_reduce(true, sums, global_sum);
+    const double bb = sums[BB];
+    if (bb == 0.0) {
+      Kokkos::deep_copy(x_, 0.0);
+      download(x, n);
+      result.converged = true;
+      return result;
+    }
+    const double target = tolerance * tolerance * bb;
+    double rr = sums[RR], rz_old = 1.0, alpha = 1.0;
+    while (rr > target && result.iterations < max_iterations) {
+      const double rz = sums[RZ];
+      const double beta = result.iterations == 0 ? 0.0 : rz / rz_old;
+      const double curvature = sums[WZ] - beta * rz / alpha;
+      if (!(curvature > 0.0) || !(rz > 0.0)) break;    // A not positive (not for SPD A)
+      alpha = rz / curvature;
+      rz_old = rz;
+      update(alpha, beta);
+      result.iterations++;
+      const double rs = sums[RW] + beta * sums[RS];
+      const double ss = sums[WW] + 2.0 * beta * sums[WS] + beta * beta * sums[SS];
+      const double predicted = rr - 2.0 * alpha * rs + alpha * alpha * ss;
+      if (predicted <= target) {
+        double actual = residual_norm2();
+        global_sum(&actual, 1);
+        rr = actual;
+        if (rr <= target || result.iterations >= max_iterations) break;
+      }
+      precondition();
+      apply_and_reduce(false, sums, global_sum);
+      rr = sums[RR];
+    }
+    result.relative_residual = std::sqrt(rr / bb);
+    result.converged = rr <= target;
+    download(x, n);
+    return result;
+  }
+
+ private:
+  int nowned_ = 0, npartners_ = 0;
+  double mass_weight_ = 1.0, friction_weight_ = 0.0;
+  const Exchange *exchange_ = nullptr;
+  Indices pair_atoms_;    // i, j per pair
+  Geometry geometry_;     // e0, e1, e2, gamma w_D per pair
+  Indices offsets_, incidence_;
+  std::vector<int> fill_;
+  Indices mobile_;
+  Values inertia_, b_, inverse_, held_;    // held_: 1 on unknowns held at their start
+  Values r_, z_, p_, w_, s_, x_;           // z_ and x_ over the partners: G acts on them
+
+  template <class View> static void resize(View &view, size_t n)
+  {
+    if (view.extent(0) < n) view = View(Kokkos::view_alloc(Kokkos::WithoutInitializing, "etd:solve"), n);
+  }
+  static void upload(Values &view, const double *host, int n)
+  {
+    resize(view, n);
+    Kokkos::View<const double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> given(host, n);
+    Kokkos::deep_copy(Kokkos::subview(view, Kokkos::make_pair(0, n)), given);
+  }
+  void download(double *host, int n) const
+  {
+    Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> out(host, n);
+    Kokkos::deep_copy(out, Kokkos::subview(x_, Kokkos::make_pair(0, n)));
+  }
+
+  // a partner vector's slots from their owners (through the host); every rank calls it, with
+  // slots or without, since the exchange is collective
+  void fill_slots(Values &vector) const
+  {
+    auto host = Kokkos::create_mirror_view(vector);
+    Kokkos::deep_copy(host, vector);
+    (*exchange_)(host.data());
+    Kokkos::deep_copy(vector, host);
+  }
+
+  // out_a = mass_weight m_a u_a + friction_weight (G u)_a for atom a (u over the partners)
+  KOKKOS_INLINE_FUNCTION static void apply_atom(int a, const Values &u, const Values &inertia,
+                                                const Indices &offsets, const Indices &incidence,
+                                                const Indices &atoms, const Geometry &geometry,
+                                                double mass_weight, double friction_weight,
+                                                double out[3])
+  {
+    double sum[3] = {0.0, 0.0, 0.0};
+    for (int e = offsets(a); e < offsets(a + 1); e++) {
+      const int entry = incidence(e);
+      const int p = (entry > 0 ? entry : -entry) - 1;
+      const int i = atoms(2 * p), j = atoms(2 * p + 1);
+      const double e0 = geometry(p, 0), e1 = geometry(p, 1), e2 = geometry(p, 2);
+      const double projected = geometry(p, 3) *
+          (e0 * (u(3 * i) - u(3 * j)) + e1 * (u(3 * i + 1) - u(3 * j + 1)) +
+           e2 * (u(3 * i + 2) - u(3 * j + 2)));
+      const double signed_projected = entry > 0 ? projected : -projected;
+      sum[0] += signed_projected * e0;
+      sum[1] += signed_projected * e1;
+      sum[2] += signed_projected * e2;
+    }
+    for (int k = 0; k < 3; k++)
+      out[k] = mass_weight * inertia(3 * a + k) * u(3 * a + k) + friction_weight * sum[k];
+  }
+
+  // each atom's block of mass_weight M + friction_weight G, inverted (zero where held)
+  void precondition_setup()
+  {
+    auto offsets = offsets_;
+    auto incidence = incidence_;
+    auto geometry = geometry_;
+    auto inertia = inertia_;
+    auto mobile = mobile_;
+    auto inverse = inverse_;
+    auto held = held_;
+    const double mass_weight = mass_weight_, friction_weight = friction_weight_;
+    Kokkos::parallel_for(
+        "etd:precondition_setup", Kokkos::RangePolicy<execution_space>(0, nowned_),
+        KOKKOS_LAMBDA(const int a) {
+          double block[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+          for (int e = offsets(a); e < offsets(a + 1); e++) {
+            const int entry = incidence(e);
+            const int p = (entry > 0 ? entry : -entry) - 1;
+            const double g = geometry(p, 3), e0 = geometry(p, 0), e1 = geometry(p, 1),
+                         e2 = geometry(p, 2);
+            block[0] += g * e0 * e0;
+            block[1] += g * e1 * e1;
+            block[2] += g * e2 * e2;
+            block[3] += g * e0 * e1;
+            block[4] += g * e0 * e2;
+            block[5] += g * e1 * e2;
+          }
+          double m[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+          if (mobile(a)) invert_block(block, mass_weight * inertia(3 * a), friction_weight, m);
+          for (int k = 0; k < 9; k++) inverse(9 * a + k) = m[k];
+          for (int k = 0; k < 3; k++) held(3 * a + k) = (m[4 * k] != 0.0) ? 0.0 : 1.0;
+        });
+  }
+
+  // x from start (or the block-Jacobi solution), then r = b - A x on the solved unknowns
+  void start_vector(const double *start, const double *start_friction, int n)
+  {
+    auto x = x_;
+    auto b = b_;
+    auto inverse = inverse_;
+    auto held = held_;
+    if (start) {
+      upload(w_, start, n);    // w_ as scratch
+      auto given = w_;
+      Kokkos::parallel_for(
+          "etd:start", Kokkos::RangePolicy<execution_space>(0, n),
+          KOKKOS_LAMBDA(const int k) { x(k) = held(k) == 0.0 ? given(k) : 0.0; });
+    } else {
+      Kokkos::parallel_for(
+          "etd:start_jacobi", Kokkos::RangePolicy<execution_space>(0, nowned_),
+          KOKKOS_LAMBDA(const int a) {
+            for (int k = 0; k < 3; k++) {
+              const int row = 9 * a + 3 * k;
+              x(3 * a + k) = inverse(row) * b(3 * a) + inverse(row + 1) * b(3 * a + 1) +
+                  inverse(row + 2) * b(3 * a + 2);
+            }
+          });
+    }
+    auto r = r_;
+    auto inertia = inertia_;
+    auto mobile = mobile_;
+    const double mass_weight = mass_weight_, friction_weight = friction_weight_;
+    if (start && start_friction) {
+      upload(s_, start_friction, n);    // s_ as scratch, zeroed below
+      auto gx = s_;
+      auto given = w_;
+      Kokkos::parallel_for(
+          "etd:start_residual", Kokkos::RangePolicy<execution_space>(0, n),
+          KOKKOS_LAMBDA(const int k) {
+            const double ax = mobile(k / 3)
+                ? mass_weight * inertia(k) * given(k) + friction_weight * gx(k)
+                : 0.0;
+            r(k) = held(k) == 0.0 ? b(k) - ax : 0.0;
+          });
+      Kokkos::deep_copy(s_, 0.0);
+      return;
+    }
+    fill_slots(x_);
+    auto offsets = offsets_;
+    auto incidence = incidence_;
+    auto atoms = pair_atoms_;
+    auto geometry = geometry_;
+    Kokkos::parallel_for(
+        "etd:start_residual", Kokkos::RangePolicy<execution_space>(0, nowned_),
+        KOKKOS_LAMBDA(const int a) {
+          double ax[3];
+          apply_atom(a, x, inertia, offsets, incidence, atoms, geometry, mass_weight,
+                     friction_weight, ax);
+          for (int k = 0; k < 3; k++)
+            r(3 * a + k) = held(3 * a + k) == 0.0 ? b(3 * a + k) - ax[k] : 0.0;
+        });
+  }
+
+  // z = P r (block-Jacobi), over the owned atoms
+  void precondition()
+  {
+    auto z = z_;
+    auto r = r_;
+    auto inverse = inverse_;
+    auto held = held_;
+    Kokkos::parallel_for(
+        "etd:precondition", Kokkos::RangePolicy<execution_space>(0, nowned_),
+        KOKKOS_LAMBDA(const int a) {
+          for (int k = 0; k < 3; k++) {
+            const int row = 9 * a + 3 * k;
+            z(3 * a + k) = held(3 * a + k) == 0.0
+                ? inverse(row) * r(3 * a) + inverse(row + 1) * r(3 * a + 1) +
+                    inverse(row + 2) * r(3 * a + 2)
+                : 0.0;
+          }
+        });
+  }
+
+  // w = A z (zero on held unknowns) and the iteration's sums in one pass, summed over ranks
+  struct ApplyAndSum {
+    using value_type = double[];
+    using size_type = int;
+    int value_count = kokkos_cg::NSUMS;
+    Values z, w, r, s, b, inertia, held;
+    Indices offsets, incidence, atoms;
+    Geometry geometry;
+    double mass_weight, friction_weight;
+    bool with_b;
+    KOKKOS_INLINE_FUNCTION void init(double *sums) const
+    {
+      for (int k = 0; k < kokkos_cg::NSUMS; k++) sums[k] = 0.0;
+    }
+    KOKKOS_INLINE_FUNCTION void join(double *sums, const double *other) const
+    {
+      for (int k = 0; k < kokkos_cg::NSUMS; k++) sums[k] += other[k];
+    }
+    KOKKOS_INLINE_FUNCTION void operator()(const int a, double *sums) const
+    {
+      using namespace kokkos_cg;
+      double az[3];
+      apply_atom(a, z, inertia, offsets, incidence, atoms, geometry, mass_weight, friction_weight,
+                 az);
+      for (int k = 0; k < 3; k++) {
+        const int d = 3 * a + k;
+        const double wd = held(d) == 0.0 ? az[k] : 0.0;
+        w(d) = wd;
+        const double rd = r(d), zd = z(d), sd = s(d);
+        sums[RZ] += rd * zd;
+        sums[WZ] += wd * zd;
+        sums[RR] += rd * rd;
+        sums[RW] += rd * wd;
+        sums[RS] += rd * sd;
+        sums[WW] += wd * wd;
+        sums[WS] += wd * sd;
+        sums[SS] += sd * sd;
+        if (with_b) sums[BB] += b(d) * b(d);
+      }
+    }
+  };
+  void apply_and_reduce(bool with_b, double sums[kokkos_cg::NSUMS], const GlobalSum &global_sum)
+  {
+    fill_slots(z_);
+    ApplyAndSum functor{kokkos_cg::NSUMS, z_, w_, r_, s_, b_, inertia_, held_, offsets_,
+                        incidence_, pair_atoms_, geometry_, mass_weight_, friction_weight_,
+                        with_b};
+    Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> result(
+        sums, kokkos_cg::NSUMS);
+    Kokkos::parallel_reduce("etd:apply_and_sum", Kokkos::RangePolicy<execution_space>(0, nowned_),
+                            functor, result);
+    global_sum(sums, with_b ? kokkos_cg::NSUMS : kokkos_cg::BB);
+  }
+
+  // p = z + beta p, s = w + beta s, x += alpha p, r -= alpha s
+  void update(double alpha, double beta)
+  {
+    auto p = p_;
+    auto s = s_;
+    auto x = x_;
+    auto r = r_;
+    auto z = z_;
+    auto w = w_;
+    Kokkos::parallel_for(
+        "etd:cg_update", Kokkos::RangePolicy<execution_space>(0, 3 * nowned_),
+        KOKKOS_LAMBDA(const int k) {
+          p(k) = z(k) + beta * p(k);
+          s(k) = w(k) + beta * s(k);
+          x(k) += alpha * p(k);
+          r(k) -= alpha * s(k);
+        });
+  }
+
+  double residual_norm2() const
+  {
+    auto r = r_;
+    double sum = 0.0;
+    Kokkos::parallel_reduce(
+        "etd:residual", Kokkos::RangePolicy<execution_space>(0, 3 * nowned_),
+        KOKKOS_LAMBDA(const int k, double &partial) { partial += r(k) * r(k); }, sum);
+    return sum;
+  }
+};
+
+}    // namespace etd
+
+#endif
