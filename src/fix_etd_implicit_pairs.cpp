@@ -58,13 +58,7 @@ bool FixETDImplicit::own_pairs_pay() const
 
 etd::PairListView FixETDImplicit::step_pairs() const
 {
-  if (own.active) return own.view;
-  etd::PairListView view;
-  view.inum = list->inum;
-  view.ilist = list->ilist;
-  view.numneigh = list->numneigh;
-  view.firstneigh = list->firstneigh;
-  return view;
+  return own.active ? own.view : etd::view_of(*list);
 }
 
 void FixETDImplicit::setup_pre_force(int vflag)

@@ -160,10 +160,7 @@ void PairDPDBase::select_pairs()
     return;
   }
   if (external_pairs) neighbor->build_one(list);    // occasional: built here when needed
-  pair_list.inum = list->inum;
-  pair_list.ilist = list->ilist;
-  pair_list.numneigh = list->numneigh;
-  pair_list.firstneigh = list->firstneigh;
+  pair_list = etd::view_of(*list);
 }
 
 bool PairDPDBase::forces_on_ghosts() const

@@ -22,6 +22,12 @@ struct PairListView {
   int *const *firstneigh = nullptr;
 };
 
+// The view of any list with those fields (LAMMPS's NeighList)
+template <typename List> inline PairListView view_of(const List &list)
+{
+  return {list.inum, list.ilist, list.numneigh, list.firstneigh};
+}
+
 class CellPairSearch {
  public:
   // Every pair (i, j) with i < nlocal, j < nall and |x_i - x_j| < cutoff (x: nall rows of 3):
