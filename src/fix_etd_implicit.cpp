@@ -203,6 +203,11 @@ void FixETDImplicit::request_neighbor_list()
     const bool wanted = options.pair_search == etd::ImplicitOptions::PairSearch::own ||
         own_pairs_pay();
     own.active = wanted && !unsupported && dpd_styles.front()->use_external_pairs(this);
+    if (!own.active && options.pair_search == etd::ImplicitOptions::PairSearch::own)
+      error->all(FLERR,
+                 "Fix etd neighbors own is not supported with pair style {}: use neighbors lammps "
+                 "(or leave the keyword out)",
+                 force->pair_style);
   }
   if (own.active) {
     list = nullptr;    // no LAMMPS list for the fix: it searches the pairs itself

@@ -34,7 +34,6 @@ const char *FixETDImplicit::own_pairs_unsupported() const
   if (dpd_styles.size() != 1 ||
       dynamic_cast<etd::DpdPairInterface *>(force->pair) != dpd_styles.front())
     return "pair style hybrid or hybrid/overlay (the other styles need LAMMPS's lists)";
-  if (force->pair->kokkosable) return "a KOKKOS pair style";
   if (atom->molecular) return "a molecular system (special bonds weight or exclude pairs)";
   // (the counts: Neighbor::init() sets its exclude flag from them after this fix's init)
   if (neighbor->nex_type || neighbor->nex_group || neighbor->nex_mol) return "neigh_modify exclude";

@@ -44,17 +44,13 @@ template <class DeviceType> class FrictionSolveKokkos {
     nowned_ = nowned;
     npartners_ = npartners;
     const int npairs = static_cast<int>(pairs.size());
-    resize(pair_atoms_, 2 * npairs);
     resize(geometry_, npairs);
     resize(offsets_, nowned + 1);
-    auto h_atoms = Kokkos::create_mirror_view(pair_atoms_);
     auto h_geometry = Kokkos::create_mirror_view(geometry_);
     auto h_offsets = Kokkos::create_mirror_view(offsets_);
     for (int a = 0; a <= nowned; a++) h_offsets(a) = 0;
     for (int p = 0; p < npairs; p++) {
       const FrictionPair &pair = pairs[p];
-      h_atoms(2 * p) = pair.i;
-      h_atoms(2 * p + 1) = pair.j;
       for (int k = 0; k < 3; k++) h_geometry(p, k) = pair.e[k];
       h_geometry(p, 3) = pair.friction;
       h_offsets(pair.i + 1)++;
@@ -63,17 +59,25 @@ template <class DeviceType> class FrictionSolveKokkos {
     for (int a = 0; a < nowned; a++) h_offsets(a + 1) += h_offsets(a);
     const int entries = h_offsets(nowned);
     resize(incidence_, entries);
+    resize(other_, entries);
     auto h_incidence = Kokkos::create_mirror_view(incidence_);
+    auto h_other = Kokkos::create_mirror_view(other_);
     fill_.assign(h_offsets.data(), h_offsets.data() + nowned);
-    // +(p + 1): the atom is the pair's i; -(p + 1): its j
+    // each entry: the pair and the atom at its other end
     for (int p = 0; p < npairs; p++) {
-      h_incidence(fill_[pairs[p].i]++) = p + 1;
-      if (pairs[p].j < nowned) h_incidence(fill_[pairs[p].j]++) = -(p + 1);
+      const int at_i = fill_[pairs[p].i]++;
+      h_incidence(at_i) = p;
+      h_other(at_i) = pairs[p].j;
+      if (pairs[p].j < nowned) {
+        const int at_j = fill_[pairs[p].j]++;
+        h_incidence(at_j) = p;
+        h_other(at_j) = pairs[p].i;
+      }
     }
-    Kokkos::deep_copy(pair_atoms_, h_atoms);
     Kokkos::deep_copy(geometry_, h_geometry);
     Kokkos::deep_copy(offsets_, h_offsets);
     Kokkos::deep_copy(incidence_, h_incidence);
+    Kokkos::deep_copy(other_, h_other);
   }
 
   // Solves over the 3 nowned unknowns; atoms with mobile[a] = 0, or with neither mass nor
@@ -130,7 +134,7 @@ template <class DeviceType> class FrictionSolveKokkos {
       if (!(curvature > 0.0) || !(rz > 0.0)) break;    // A not positive (not for SPD A)
       alpha = rz / curvature;
       rz_old = rz;
-      update(alpha, beta);
+      update_and_precondition(alpha, beta);
       result.iterations++;
       const double rs = sums[RW] + beta * sums[RS];
       const double ss = sums[WW] + 2.0 * beta * sums[WS] + beta * beta * sums[SS];
@@ -141,7 +145,6 @@ template <class DeviceType> class FrictionSolveKokkos {
         rr = actual;
         if (rr <= target || result.iterations >= max_iterations) break;
       }
-      precondition();
       apply_and_reduce(false, sums, global_sum);
       rr = sums[RR];
     }
@@ -155,9 +158,8 @@ template <class DeviceType> class FrictionSolveKokkos {
   int nowned_ = 0, npartners_ = 0;
   double mass_weight_ = 1.0, friction_weight_ = 0.0;
   const Exchange *exchange_ = nullptr;
-  Indices pair_atoms_;    // i, j per pair
   Geometry geometry_;     // e0, e1, e2, gamma w_D per pair
-  Indices offsets_, incidence_;
+  Indices offsets_, incidence_, other_;    // per owned atom, its pairs and their other atoms
   std::vector<int> fill_;
   Indices mobile_;
   Values inertia_, b_, inverse_, held_;    // held_: 1 on unknowns held at their start
@@ -189,29 +191,29 @@ template <class DeviceType> class FrictionSolveKokkos {
     Kokkos::deep_copy(vector, host);
   }
 
-  // out_a = mass_weight m_a u_a + friction_weight (G u)_a for atom a (u over the partners)
+  // out_a = mass_weight m_a u_a + friction_weight (G u)_a for atom a (u over the partners).
+  // A pair's share on either of its atoms is gamma w_D (e . (u_a - u_other)) e: the sign of e
+  // cancels, so each atom reads only its own entries.
   KOKKOS_INLINE_FUNCTION static void apply_atom(int a, const Values &u, const Values &inertia,
                                                 const Indices &offsets, const Indices &incidence,
-                                                const Indices &atoms, const Geometry &geometry,
+                                                const Indices &other, const Geometry &geometry,
                                                 double mass_weight, double friction_weight,
                                                 double out[3])
   {
-    double sum[3] = {0.0, 0.0, 0.0};
+    const double ua0 = u(3 * a), ua1 = u(3 * a + 1), ua2 = u(3 * a + 2);
+    double sum0 = 0.0, sum1 = 0.0, sum2 = 0.0;
     for (int e = offsets(a); e < offsets(a + 1); e++) {
-      const int entry = incidence(e);
-      const int p = (entry > 0 ? entry : -entry) - 1;
-      const int i = atoms(2 * p), j = atoms(2 * p + 1);
+      const int p = incidence(e), o = other(e);
       const double e0 = geometry(p, 0), e1 = geometry(p, 1), e2 = geometry(p, 2);
       const double projected = geometry(p, 3) *
-          (e0 * (u(3 * i) - u(3 * j)) + e1 * (u(3 * i + 1) - u(3 * j + 1)) +
-           e2 * (u(3 * i + 2) - u(3 * j + 2)));
-      const double signed_projected = entry > 0 ? projected : -projected;
-      sum[0] += signed_projected * e0;
-      sum[1] += signed_projected * e1;
-      sum[2] += signed_projected * e2;
+          (e0 * (ua0 - u(3 * o)) + e1 * (ua1 - u(3 * o + 1)) + e2 * (ua2 - u(3 * o + 2)));
+      sum0 += projected * e0;
+      sum1 += projected * e1;
+      sum2 += projected * e2;
     }
-    for (int k = 0; k < 3; k++)
-      out[k] = mass_weight * inertia(3 * a + k) * u(3 * a + k) + friction_weight * sum[k];
+    out[0] = mass_weight * inertia(3 * a) * ua0 + friction_weight * sum0;
+    out[1] = mass_weight * inertia(3 * a + 1) * ua1 + friction_weight * sum1;
+    out[2] = mass_weight * inertia(3 * a + 2) * ua2 + friction_weight * sum2;
   }
 
   // each atom's block of mass_weight M + friction_weight G, inverted (zero where held)
@@ -230,8 +232,7 @@ template <class DeviceType> class FrictionSolveKokkos {
         KOKKOS_LAMBDA(const int a) {
           double block[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
           for (int e = offsets(a); e < offsets(a + 1); e++) {
-            const int entry = incidence(e);
-            const int p = (entry > 0 ? entry : -entry) - 1;
+            const int p = incidence(e);
             const double g = geometry(p, 3), e0 = geometry(p, 0), e1 = geometry(p, 1),
                          e2 = geometry(p, 2);
             block[0] += g * e0 * e0;
@@ -294,13 +295,13 @@ template <class DeviceType> class FrictionSolveKokkos {
     fill_slots(x_);
     auto offsets = offsets_;
     auto incidence = incidence_;
-    auto atoms = pair_atoms_;
+    auto other = other_;
     auto geometry = geometry_;
     Kokkos::parallel_for(
         "etd:start_residual", Kokkos::RangePolicy<execution_space>(0, nowned_),
         KOKKOS_LAMBDA(const int a) {
           double ax[3];
-          apply_atom(a, x, inertia, offsets, incidence, atoms, geometry, mass_weight,
+          apply_atom(a, x, inertia, offsets, incidence, other, geometry, mass_weight,
                      friction_weight, ax);
           for (int k = 0; k < 3; k++)
             r(3 * a + k) = held(3 * a + k) == 0.0 ? b(3 * a + k) - ax[k] : 0.0;
@@ -333,7 +334,7 @@ template <class DeviceType> class FrictionSolveKokkos {
     using size_type = int;
     int value_count = kokkos_cg::NSUMS;
     Values z, w, r, s, b, inertia, held;
-    Indices offsets, incidence, atoms;
+    Indices offsets, incidence, other;
     Geometry geometry;
     double mass_weight, friction_weight;
     bool with_b;
@@ -349,7 +350,7 @@ template <class DeviceType> class FrictionSolveKokkos {
     {
       using namespace kokkos_cg;
       double az[3];
-      apply_atom(a, z, inertia, offsets, incidence, atoms, geometry, mass_weight, friction_weight,
+      apply_atom(a, z, inertia, offsets, incidence, other, geometry, mass_weight, friction_weight,
                  az);
       for (int k = 0; k < 3; k++) {
         const int d = 3 * a + k;
@@ -372,7 +373,7 @@ template <class DeviceType> class FrictionSolveKokkos {
   {
     fill_slots(z_);
     ApplyAndSum functor{kokkos_cg::NSUMS, z_, w_, r_, s_, b_, inertia_, held_, offsets_,
-                        incidence_, pair_atoms_, geometry_, mass_weight_, friction_weight_,
+                        incidence_, other_, geometry_, mass_weight_, friction_weight_,
                         with_b};
     Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> result(
         sums, kokkos_cg::NSUMS);
@@ -381,8 +382,9 @@ template <class DeviceType> class FrictionSolveKokkos {
     global_sum(sums, with_b ? kokkos_cg::NSUMS : kokkos_cg::BB);
   }
 
-  // p = z + beta p, s = w + beta s, x += alpha p, r -= alpha s
-  void update(double alpha, double beta)
+  // p = z + beta p, s = w + beta s, x += alpha p, r -= alpha s, then z = P r for the next
+  // iteration: one pass over the atoms (each parallel region costs a fork and a join)
+  void update_and_precondition(double alpha, double beta)
   {
     auto p = p_;
     auto s = s_;
@@ -390,13 +392,26 @@ template <class DeviceType> class FrictionSolveKokkos {
     auto r = r_;
     auto z = z_;
     auto w = w_;
+    auto inverse = inverse_;
+    auto held = held_;
     Kokkos::parallel_for(
-        "etd:cg_update", Kokkos::RangePolicy<execution_space>(0, 3 * nowned_),
-        KOKKOS_LAMBDA(const int k) {
-          p(k) = z(k) + beta * p(k);
-          s(k) = w(k) + beta * s(k);
-          x(k) += alpha * p(k);
-          r(k) -= alpha * s(k);
+        "etd:cg_update", Kokkos::RangePolicy<execution_space>(0, nowned_),
+        KOKKOS_LAMBDA(const int a) {
+          double ra[3];
+          for (int k = 0; k < 3; k++) {
+            const int d = 3 * a + k;
+            p(d) = z(d) + beta * p(d);
+            s(d) = w(d) + beta * s(d);
+            x(d) += alpha * p(d);
+            ra[k] = r(d) - alpha * s(d);
+            r(d) = ra[k];
+          }
+          for (int k = 0; k < 3; k++) {
+            const int row = 9 * a + 3 * k;
+            z(3 * a + k) = held(3 * a + k) == 0.0
+                ? inverse(row) * ra[0] + inverse(row + 1) * ra[1] + inverse(row + 2) * ra[2]
+                : 0.0;
+          }
         });
   }
 

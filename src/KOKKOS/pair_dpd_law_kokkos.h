@@ -53,8 +53,12 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   // what the implicit scheme asks of the style: served by the host loop
   void request_conservative_only() override;
   void request_newton_off_list() override;
-  // its host loop reads LAMMPS's host list: fix etd's own pair search is for the CPU styles
-  bool use_external_pairs(const etd::ExternalPairs *) override { return false; }
+  // fix etd's own pair search: for the host loop (the implicit scheme's), which reads pairs as
+  // the CPU style does; the kernel reads LAMMPS's Kokkos list
+  bool use_external_pairs(const etd::ExternalPairs *source) override
+  {
+    return host_loop && Base::use_external_pairs(source);
+  }
 
   // FRICTION, SPLIT: the kernel also sums the diagonal friction, the force split
   template <int NEIGHFLAG, int EVFLAG, int FRICTION, int SPLIT> struct TagPairLaw {
