@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Threads against ranks: dpd/gen/kk (Kokkos OpenMP) beside dpd/gen on MPI ranks and beside
-# LAMMPS's dpd/kk and dpd, with fix nve on 24,000 atoms of the standard fluid, all with the
+# LAMMPS's dpd/kk and dpd, with fix nve, fix etd and fix etd scheme implicit on 24,000 atoms of
+# the standard fluid, all with the
 # KOKKOS LAMMPS of tools/kokkos (one binary). The set-ups run alternated, ROUNDS times over, in
 # one sitting; each run's loop time goes to results/throughput.jsonl (replaced), and
 # table.py turns it into results/throughput.md.
@@ -18,7 +19,8 @@ plugin="$build/etddpdplugin.so"
 lmp="$prefix/bin/lmp"
 mpi=(mpirun --oversubscribe); [ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root)
 export OMP_PROC_BIND=false
-# name | ranks | threads (0: no Kokkos) | pair style | integrator (nve, or etd: fix etd diagonal)
+# name | ranks | threads (0: no Kokkos) | pair style | integrator (nve; etd: fix etd diagonal;
+# implicit: fix etd scheme implicit at the accuracy matrix's step for GW m = 0.01, dt = 0.005)
 setups=(
   "dpd/gen, 2 ranks|2|0|dpd/gen|nve"
   "dpd/gen/kk, 1 rank x 2 threads|1|2|dpd/gen|nve"
@@ -28,6 +30,10 @@ setups=(
   "dpd/gen, 1 rank|1|0|dpd/gen|nve"
   "dpd/gen + fix etd, 2 ranks|2|0|dpd/gen|etd"
   "dpd/gen/kk + fix etd, 1 rank x 2 threads|1|2|dpd/gen|etd"
+  "dpd/gen + fix etd implicit, 2 ranks|2|0|dpd/gen|implicit"
+  "dpd/gen + fix etd implicit, 1 rank|1|0|dpd/gen|implicit"
+  "dpd/gen/kk + fix etd/kk implicit, 1 rank x 2 threads|1|2|dpd/gen|implicit"
+  "dpd/gen/kk + fix etd/kk implicit, 1 rank x 1 thread|1|1|dpd/gen|implicit"
 )
 mkdir -p "$here/results"
 out="$here/results/throughput.jsonl"
@@ -41,11 +47,13 @@ for round in $(seq "$rounds"); do
           -var integrator "$integrator"
           -log "$work/log" -screen none)
     bind=()    # Open MPI binds each of 1 or 2 ranks to one core: threads would share it
+    [ "$integrator" = implicit ] && args+=(-var dt 0.005)
     [ "$threads" != 0 ] && args+=(-k on t "$threads" -sf kk)
     [ "$threads" -gt 1 ] && bind=(--bind-to none)
     "${mpi[@]}" "${bind[@]}" -np "$ranks" "$lmp" "${args[@]}"
     loop=$(awk '/^BENCH/{b=1} b&&/^Loop time/{print $4; exit}' "$work/log")
-    style=$(awk '/^BENCH/{b=1} /pair [a-z\/]+, perpetual/{s=$3} END{print s}' "$work/log")
+    # (the pair style's list: perpetual, or occasional where fix etd's own search feeds it)
+    style=$(awk '/^BENCH/{b=1} /pair [a-z\/]+, (perpetual|occasional)/{s=$3} END{print s}' "$work/log")
     lammps=$(sed -n '1s/^LAMMPS (\(.*\))$/\1/p' "$work/log")
     printf '{"round": %d, "setup": "%s", "pair_style": "%s", "integrator": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "loop_s": %s, "lammps": "%s", "cores": %d}\n' \
       "$round" "$name" "${style%,}" "$integrator" "$ranks" "$threads" "$steps" "$loop" "$lammps" "$(nproc)" | tee -a "$out"

@@ -9,7 +9,7 @@ import json
 import statistics
 import sys
 
-INTEGRATORS = {"nve": "fix nve", "etd": "fix etd scheme diagonal"}
+INTEGRATORS = {"nve": "fix nve", "etd": "fix etd scheme diagonal", "implicit": "fix etd scheme implicit"}
 
 
 def baseline(runs, integrator):
@@ -29,7 +29,8 @@ def main(path):
     print(f"{first['atoms']:,} atoms of the standard fluid, {first['steps']} steps per run, "
           f"{len(rounds)} alternated rounds (bench/kokkos/run.sh), LAMMPS {first.get('lammps', '?')} with "
           f"KOKKOS (OpenMP backend) on {first.get('cores', '?')} cores. fix nve: m = 1, dt = 0.01; "
-          "fix etd scheme diagonal: m = 0.01, dt = 0.002. Ratio: to dpd/gen on 2 MPI ranks with the "
+          "fix etd scheme diagonal: m = 0.01, dt = 0.002; fix etd scheme implicit: m = 0.01, dt = 0.005. "
+          "Ratio: to dpd/gen on 2 MPI ranks with the "
           "same integrator, in the same round.")
     print()
     print("| set-up | integrator | pair style run | atom-steps/s (mean +- sd) | ratio to dpd/gen on 2 ranks (lowest) |")
