@@ -2,6 +2,8 @@
 #include "fix_etd_implicit_kokkos.h"
 
 #include "atom.h"
+#include "comm.h"
+#include "error.h"
 
 #include <cstring>
 
@@ -14,6 +16,20 @@ template <class DeviceType> void *FixETDImplicitKokkos<DeviceType>::extract(cons
     return &kernel_solves;
   }
   return FixETDImplicit::extract(name, dim);
+}
+
+// where the solve stays on the host, the run says why (as fix etd/kk scheme diagonal does)
+template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::init()
+{
+  FixETDImplicit::init();
+  const char *reason = options.overdamped ? "overdamped yes"
+      : dofs != 3                         ? "dpd/fpm pairs (rotation)"
+                                          : nullptr;
+  if (reason && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix etd/kk scheme implicit: the friction solve runs on the host with {} (the "
+                   "CPU solver, same results)",
+                   reason);
 }
 
 template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::setup(int vflag)

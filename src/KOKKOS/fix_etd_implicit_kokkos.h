@@ -19,6 +19,7 @@ template <class DeviceType> class FixETDImplicitKokkos : public FixETDImplicit {
   FixETDImplicitKokkos(class LAMMPS *lmp, int narg, char **arg) : FixETDImplicit(lmp, narg, arg) {}
   // "kernel_solves" (dim 0, a double): how many solves of this run ran in the kernels
   void *extract(const char *name, int &dim) override;
+  void init() override;
   void setup(int vflag) override;
 
  protected:
