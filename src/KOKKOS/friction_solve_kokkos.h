@@ -154,68 +154,8 @@ template <class DeviceType> class FrictionSolveKokkos {
     return result;
   }
 
- private:
-  int nowned_ = 0, npartners_ = 0;
-  double mass_weight_ = 1.0, friction_weight_ = 0.0;
-  const Exchange *exchange_ = nullptr;
-  Geometry geometry_;     // e0, e1, e2, gamma w_D per pair
-  Indices offsets_, incidence_, other_;    // per owned atom, its pairs and their other atoms
-  std::vector<int> fill_;
-  Indices mobile_;
-  Values inertia_, b_, inverse_, held_;    // held_: 1 on unknowns held at their start
-  Values r_, z_, p_, w_, s_, x_;           // z_ and x_ over the partners: G acts on them
-
-  template <class View> static void resize(View &view, size_t n)
-  {
-    if (view.extent(0) < n) view = View(Kokkos::view_alloc(Kokkos::WithoutInitializing, "etd:solve"), n);
-  }
-  static void upload(Values &view, const double *host, int n)
-  {
-    resize(view, n);
-    Kokkos::View<const double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> given(host, n);
-    Kokkos::deep_copy(Kokkos::subview(view, Kokkos::make_pair(0, n)), given);
-  }
-  void download(double *host, int n) const
-  {
-    Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> out(host, n);
-    Kokkos::deep_copy(out, Kokkos::subview(x_, Kokkos::make_pair(0, n)));
-  }
-
-  // a partner vector's slots from their owners (through the host); every rank calls it, with
-  // slots or without, since the exchange is collective
-  void fill_slots(Values &vector) const
-  {
-    auto host = Kokkos::create_mirror_view(vector);
-    Kokkos::deep_copy(host, vector);
-    (*exchange_)(host.data());
-    Kokkos::deep_copy(vector, host);
-  }
-
-  // out_a = mass_weight m_a u_a + friction_weight (G u)_a for atom a (u over the partners).
-  // A pair's share on either of its atoms is gamma w_D (e . (u_a - u_other)) e: the sign of e
-  // cancels, so each atom reads only its own entries.
-  KOKKOS_INLINE_FUNCTION static void apply_atom(int a, const Values &u, const Values &inertia,
-                                                const Indices &offsets, const Indices &incidence,
-                                                const Indices &other, const Geometry &geometry,
-                                                double mass_weight, double friction_weight,
-                                                double out[3])
-  {
-    const double ua0 = u(3 * a), ua1 = u(3 * a + 1), ua2 = u(3 * a + 2);
-    double sum0 = 0.0, sum1 = 0.0, sum2 = 0.0;
-    for (int e = offsets(a); e < offsets(a + 1); e++) {
-      const int p = incidence(e), o = other(e);
-      const double e0 = geometry(p, 0), e1 = geometry(p, 1), e2 = geometry(p, 2);
-      const double projected = geometry(p, 3) *
-          (e0 * (ua0 - u(3 * o)) + e1 * (ua1 - u(3 * o + 1)) + e2 * (ua2 - u(3 * o + 2)));
-      sum0 += projected * e0;
-      sum1 += projected * e1;
-      sum2 += projected * e2;
-    }
-    out[0] = mass_weight * inertia(3 * a) * ua0 + friction_weight * sum0;
-    out[1] = mass_weight * inertia(3 * a + 1) * ua1 + friction_weight * sum1;
-    out[2] = mass_weight * inertia(3 * a + 2) * ua2 + friction_weight * sum2;
-  }
-
+ // the kernels and their launchers: public, since CUDA requires a kernel's functor type and
+ // the function enclosing an extended (device) lambda to be
   // each atom's block of mass_weight M + friction_weight G, inverted (zero where held)
   void precondition_setup()
   {
@@ -328,6 +268,49 @@ template <class DeviceType> class FrictionSolveKokkos {
         });
   }
 
+  // p = z + beta p, s = w + beta s, x += alpha p, r -= alpha s, then z = P r for the next
+  // iteration: one pass over the atoms (each parallel region costs a fork and a join)
+  void update_and_precondition(double alpha, double beta)
+  {
+    auto p = p_;
+    auto s = s_;
+    auto x = x_;
+    auto r = r_;
+    auto z = z_;
+    auto w = w_;
+    auto inverse = inverse_;
+    auto held = held_;
+    Kokkos::parallel_for(
+        "etd:cg_update", Kokkos::RangePolicy<execution_space>(0, nowned_),
+        KOKKOS_LAMBDA(const int a) {
+          double ra[3];
+          for (int k = 0; k < 3; k++) {
+            const int d = 3 * a + k;
+            p(d) = z(d) + beta * p(d);
+            s(d) = w(d) + beta * s(d);
+            x(d) += alpha * p(d);
+            ra[k] = r(d) - alpha * s(d);
+            r(d) = ra[k];
+          }
+          for (int k = 0; k < 3; k++) {
+            const int row = 9 * a + 3 * k;
+            z(3 * a + k) = held(3 * a + k) == 0.0
+                ? inverse(row) * ra[0] + inverse(row + 1) * ra[1] + inverse(row + 2) * ra[2]
+                : 0.0;
+          }
+        });
+  }
+
+  double residual_norm2() const
+  {
+    auto r = r_;
+    double sum = 0.0;
+    Kokkos::parallel_reduce(
+        "etd:residual", Kokkos::RangePolicy<execution_space>(0, 3 * nowned_),
+        KOKKOS_LAMBDA(const int k, double &partial) { partial += r(k) * r(k); }, sum);
+    return sum;
+  }
+
   // w = A z (zero on held unknowns) and the iteration's sums in one pass, summed over ranks
   struct ApplyAndSum {
     using value_type = double[];
@@ -382,47 +365,67 @@ template <class DeviceType> class FrictionSolveKokkos {
     global_sum(sums, with_b ? kokkos_cg::NSUMS : kokkos_cg::BB);
   }
 
-  // p = z + beta p, s = w + beta s, x += alpha p, r -= alpha s, then z = P r for the next
-  // iteration: one pass over the atoms (each parallel region costs a fork and a join)
-  void update_and_precondition(double alpha, double beta)
+
+ private:
+  int nowned_ = 0, npartners_ = 0;
+  double mass_weight_ = 1.0, friction_weight_ = 0.0;
+  const Exchange *exchange_ = nullptr;
+  Geometry geometry_;     // e0, e1, e2, gamma w_D per pair
+  Indices offsets_, incidence_, other_;    // per owned atom, its pairs and their other atoms
+  std::vector<int> fill_;
+  Indices mobile_;
+  Values inertia_, b_, inverse_, held_;    // held_: 1 on unknowns held at their start
+  Values r_, z_, p_, w_, s_, x_;           // z_ and x_ over the partners: G acts on them
+
+  template <class View> static void resize(View &view, size_t n)
   {
-    auto p = p_;
-    auto s = s_;
-    auto x = x_;
-    auto r = r_;
-    auto z = z_;
-    auto w = w_;
-    auto inverse = inverse_;
-    auto held = held_;
-    Kokkos::parallel_for(
-        "etd:cg_update", Kokkos::RangePolicy<execution_space>(0, nowned_),
-        KOKKOS_LAMBDA(const int a) {
-          double ra[3];
-          for (int k = 0; k < 3; k++) {
-            const int d = 3 * a + k;
-            p(d) = z(d) + beta * p(d);
-            s(d) = w(d) + beta * s(d);
-            x(d) += alpha * p(d);
-            ra[k] = r(d) - alpha * s(d);
-            r(d) = ra[k];
-          }
-          for (int k = 0; k < 3; k++) {
-            const int row = 9 * a + 3 * k;
-            z(3 * a + k) = held(3 * a + k) == 0.0
-                ? inverse(row) * ra[0] + inverse(row + 1) * ra[1] + inverse(row + 2) * ra[2]
-                : 0.0;
-          }
-        });
+    if (view.extent(0) < n) view = View(Kokkos::view_alloc(Kokkos::WithoutInitializing, "etd:solve"), n);
+  }
+  static void upload(Values &view, const double *host, int n)
+  {
+    resize(view, n);
+    Kokkos::View<const double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> given(host, n);
+    Kokkos::deep_copy(Kokkos::subview(view, Kokkos::make_pair(0, n)), given);
+  }
+  void download(double *host, int n) const
+  {
+    Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> out(host, n);
+    Kokkos::deep_copy(out, Kokkos::subview(x_, Kokkos::make_pair(0, n)));
   }
 
-  double residual_norm2() const
+  // a partner vector's slots from their owners (through the host); every rank calls it, with
+  // slots or without, since the exchange is collective
+  void fill_slots(Values &vector) const
   {
-    auto r = r_;
-    double sum = 0.0;
-    Kokkos::parallel_reduce(
-        "etd:residual", Kokkos::RangePolicy<execution_space>(0, 3 * nowned_),
-        KOKKOS_LAMBDA(const int k, double &partial) { partial += r(k) * r(k); }, sum);
-    return sum;
+    auto host = Kokkos::create_mirror_view(vector);
+    Kokkos::deep_copy(host, vector);
+    (*exchange_)(host.data());
+    Kokkos::deep_copy(vector, host);
+  }
+
+  // out_a = mass_weight m_a u_a + friction_weight (G u)_a for atom a (u over the partners).
+  // A pair's share on either of its atoms is gamma w_D (e . (u_a - u_other)) e: the sign of e
+  // cancels, so each atom reads only its own entries.
+  KOKKOS_INLINE_FUNCTION static void apply_atom(int a, const Values &u, const Values &inertia,
+                                                const Indices &offsets, const Indices &incidence,
+                                                const Indices &other, const Geometry &geometry,
+                                                double mass_weight, double friction_weight,
+                                                double out[3])
+  {
+    const double ua0 = u(3 * a), ua1 = u(3 * a + 1), ua2 = u(3 * a + 2);
+    double sum0 = 0.0, sum1 = 0.0, sum2 = 0.0;
+    for (int e = offsets(a); e < offsets(a + 1); e++) {
+      const int p = incidence(e), o = other(e);
+      const double e0 = geometry(p, 0), e1 = geometry(p, 1), e2 = geometry(p, 2);
+      const double projected = geometry(p, 3) *
+          (e0 * (ua0 - u(3 * o)) + e1 * (ua1 - u(3 * o + 1)) + e2 * (ua2 - u(3 * o + 2)));
+      sum0 += projected * e0;
+      sum1 += projected * e1;
+      sum2 += projected * e2;
+    }
+    out[0] = mass_weight * inertia(3 * a) * ua0 + friction_weight * sum0;
+    out[1] = mass_weight * inertia(3 * a + 1) * ua1 + friction_weight * sum1;
+    out[2] = mass_weight * inertia(3 * a + 2) * ua2 + friction_weight * sum2;
   }
 };
 
