@@ -184,6 +184,18 @@ std::string work_file(const std::string &name)
   return std::string(ETD_TEST_WORKDIR) + "/" + name;
 }
 
+std::string read_file(const std::string &path)
+{
+  std::string text;
+  if (FILE *f = std::fopen(path.c_str(), "r")) {
+    char buffer[4096];
+    size_t n;
+    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
+    std::fclose(f);
+  }
+  return text;
+}
+
 int world_rank()
 {
   int r;

@@ -64,6 +64,7 @@ void write_random_sphere_data(const std::string &path, int natoms, double L, uns
                               int ntypes = 1, double vmax = 0.0, double wmax = 0.0,
                               double diameter = 1.0);
 std::string work_file(const std::string &name);    // a path in the test's build folder
+std::string read_file(const std::string &path);    // its text ("" where it cannot be read)
 int world_rank();
 int world_size();
 // Runs body with a LAMMPS instance on the first `ranks` world ranks (the others wait); returns

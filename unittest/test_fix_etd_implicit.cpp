@@ -454,20 +454,6 @@ TEST(FixEtdImplicit, FpmRefusesOverdampedAndZeroInertia)
   }
 }
 
-namespace {
-std::string read_file(const std::string &path)
-{
-  std::string text;
-  if (FILE *f = std::fopen(path.c_str(), "r")) {
-    char buffer[4096];
-    size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
-    std::fclose(f);
-  }
-  return text;
-}
-}    // namespace
-
 // LAMMPS 29Sep2021's default neigh_modify delay 10 lets the atoms of a thermalised m = 0.01
 // fluid run about 1.3 beyond their list in the 10 unchecked steps at dt = 0.003 (kBT rose to
 // 1.04-1.07 before this check): every scheme stops with an ERROR naming neigh_modify. The
@@ -533,7 +519,7 @@ TEST(FixEtdImplicit, RunWithDangerousBuildsEndsWithAWarning)
       dangerous = l.lmp->neighbor->ndanger > 0;
     }
     if (etdtest::world_rank() != 0) continue;    // (rank 0 writes the log)
-    const std::string text = read_file(log);
+    const std::string text = etdtest::read_file(log);
     const bool warned =
         text.find("dangerous neighbor list builds in this run") != std::string::npos;
     EXPECT_EQ(warned, c.warned) << c.fix << ", skin " << c.skin;
@@ -586,7 +572,7 @@ TEST(FixEtdImplicit, MissingPairIsAnError)
       EXPECT_GT(std::fabs(x[0] - x[3]), 1.35 + 2 * 3 * 0.4 - 1e-9) << "moved apart freely";
     }
     if (etdtest::world_rank() == 0) {
-      const std::string text = read_file(log);
+      const std::string text = etdtest::read_file(log);
       EXPECT_EQ(text.find("WARNING"), std::string::npos) << text;
     }
   }

@@ -376,13 +376,7 @@ TEST(KokkosStyles, ImplicitSolveOnTheHostIsNamed)
               "run 0 post no", "log none"});
     }
     if (etdtest::world_rank() != 0) continue;    // (rank 0 writes the log)
-    std::string text;
-    if (FILE *f = std::fopen(log.c_str(), "r")) {
-      char buffer[4096];
-      size_t n;
-      while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
-      std::fclose(f);
-    }
+    const std::string text = etdtest::read_file(log);
     const bool warned = text.find("the friction solve runs on the host with overdamped yes") !=
         std::string::npos;
     EXPECT_EQ(warned, overdamped) << text;

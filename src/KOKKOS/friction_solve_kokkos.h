@@ -21,11 +21,6 @@
 
 namespace etd {
 
-namespace kokkos_cg {
-// the sums of one iteration, in conjugate_gradient.h's order (cg_detail)
-enum { RZ, WZ, RR, RW, RS, WW, WS, SS, BB, NSUMS };
-}    // namespace kokkos_cg
-
 template <class DeviceType> class FrictionSolveKokkos {
  public:
   using execution_space = typename DeviceType::execution_space;
@@ -113,49 +108,31 @@ template <class DeviceType> class FrictionSolveKokkos {
     precondition_setup();
     start_vector(start, start_friction, n);
 
-    using namespace kokkos_cg;
-    SolverResult result;
-    double sums[NSUMS];
+    double sums[cg_detail::NSUMS];
     precondition();
     apply_and_reduce(true, sums, global_sum);
-    const double bb = sums[BB];
-    if (bb == 0.0) {
+    SolverResult result;
+    if (sums[cg_detail::BB] == 0.0) {
       Kokkos::deep_copy(x_, 0.0);
-      download(x, n);
       result.converged = true;
-      return result;
+    } else {
+      // the vector work of an iteration, in kernels (the update also preconditions: z = P r)
+      struct Ops {
+        FrictionSolveKokkos &solver;
+        const GlobalSum &global_sum;
+        void update(double alpha, double beta) { solver.update_and_precondition(alpha, beta); }
+        double residual_norm2() const { return solver.residual_norm2(); }
+        void next_sums(double *out) { solver.apply_and_reduce(false, out, global_sum); }
+      } ops{*this, global_sum};
+      result = cg_detail::iterate(ops, global_sum, sums, tolerance, max_iterations);
     }
-    const double target = tolerance * tolerance * bb;
-    double rr = sums[RR], rz_old = 1.0, alpha = 1.0;
-    while (rr > target && result.iterations < max_iterations) {
-      const double rz = sums[RZ];
-      const double beta = result.iterations == 0 ? 0.0 : rz / rz_old;
-      const double curvature = sums[WZ] - beta * rz / alpha;
-      if (!(curvature > 0.0) || !(rz > 0.0)) break;    // A not positive (not for SPD A)
-      alpha = rz / curvature;
-      rz_old = rz;
-      update_and_precondition(alpha, beta);
-      result.iterations++;
-      const double rs = sums[RW] + beta * sums[RS];
-      const double ss = sums[WW] + 2.0 * beta * sums[WS] + beta * beta * sums[SS];
-      const double predicted = rr - 2.0 * alpha * rs + alpha * alpha * ss;
-      if (predicted <= target) {
-        double actual = residual_norm2();
-        global_sum(&actual, 1);
-        rr = actual;
-        if (rr <= target || result.iterations >= max_iterations) break;
-      }
-      apply_and_reduce(false, sums, global_sum);
-      rr = sums[RR];
-    }
-    result.relative_residual = std::sqrt(rr / bb);
-    result.converged = rr <= target;
     download(x, n);
     return result;
   }
 
- // the kernels and their launchers: public, since CUDA requires a kernel's functor type and
- // the function enclosing an extended (device) lambda to be
+  // (The kernels and their launchers are public: CUDA requires a kernel's functor type and the
+  // function enclosing an extended device lambda to be.)
+
   // each atom's block of mass_weight M + friction_weight G, inverted (zero where held)
   void precondition_setup()
   {
@@ -206,11 +183,8 @@ template <class DeviceType> class FrictionSolveKokkos {
       Kokkos::parallel_for(
           "etd:start_jacobi", Kokkos::RangePolicy<execution_space>(0, nowned_),
           KOKKOS_LAMBDA(const int a) {
-            for (int k = 0; k < 3; k++) {
-              const int row = 9 * a + 3 * k;
-              x(3 * a + k) = inverse(row) * b(3 * a) + inverse(row + 1) * b(3 * a + 1) +
-                  inverse(row + 2) * b(3 * a + 2);
-            }
+            const double ba[3] = {b(3 * a), b(3 * a + 1), b(3 * a + 2)};
+            block_product(a, inverse, held, ba, x);
           });
     }
     auto r = r_;
@@ -248,6 +222,19 @@ template <class DeviceType> class FrictionSolveKokkos {
         });
   }
 
+  // out_k = (M_a^-1 v)_k of atom a's inverted block, 0 where the unknown is held
+  KOKKOS_INLINE_FUNCTION static void block_product(int a, const Values &inverse,
+                                                   const Values &held, const double v[3],
+                                                   const Values &out)
+  {
+    for (int k = 0; k < 3; k++) {
+      const int row = 9 * a + 3 * k;
+      out(3 * a + k) = held(3 * a + k) == 0.0
+          ? inverse(row) * v[0] + inverse(row + 1) * v[1] + inverse(row + 2) * v[2]
+          : 0.0;
+    }
+  }
+
   // z = P r (block-Jacobi), over the owned atoms
   void precondition()
   {
@@ -258,13 +245,8 @@ template <class DeviceType> class FrictionSolveKokkos {
     Kokkos::parallel_for(
         "etd:precondition", Kokkos::RangePolicy<execution_space>(0, nowned_),
         KOKKOS_LAMBDA(const int a) {
-          for (int k = 0; k < 3; k++) {
-            const int row = 9 * a + 3 * k;
-            z(3 * a + k) = held(3 * a + k) == 0.0
-                ? inverse(row) * r(3 * a) + inverse(row + 1) * r(3 * a + 1) +
-                    inverse(row + 2) * r(3 * a + 2)
-                : 0.0;
-          }
+          const double ra[3] = {r(3 * a), r(3 * a + 1), r(3 * a + 2)};
+          block_product(a, inverse, held, ra, z);
         });
   }
 
@@ -292,12 +274,7 @@ template <class DeviceType> class FrictionSolveKokkos {
             ra[k] = r(d) - alpha * s(d);
             r(d) = ra[k];
           }
-          for (int k = 0; k < 3; k++) {
-            const int row = 9 * a + 3 * k;
-            z(3 * a + k) = held(3 * a + k) == 0.0
-                ? inverse(row) * ra[0] + inverse(row + 1) * ra[1] + inverse(row + 2) * ra[2]
-                : 0.0;
-          }
+          block_product(a, inverse, held, ra, z);
         });
   }
 
@@ -315,7 +292,7 @@ template <class DeviceType> class FrictionSolveKokkos {
   struct ApplyAndSum {
     using value_type = double[];
     using size_type = int;
-    int value_count = kokkos_cg::NSUMS;
+    int value_count = cg_detail::NSUMS;
     Values z, w, r, s, b, inertia, held;
     Indices offsets, incidence, other;
     Geometry geometry;
@@ -323,15 +300,15 @@ template <class DeviceType> class FrictionSolveKokkos {
     bool with_b;
     KOKKOS_INLINE_FUNCTION void init(double *sums) const
     {
-      for (int k = 0; k < kokkos_cg::NSUMS; k++) sums[k] = 0.0;
+      for (int k = 0; k < cg_detail::NSUMS; k++) sums[k] = 0.0;
     }
     KOKKOS_INLINE_FUNCTION void join(double *sums, const double *other) const
     {
-      for (int k = 0; k < kokkos_cg::NSUMS; k++) sums[k] += other[k];
+      for (int k = 0; k < cg_detail::NSUMS; k++) sums[k] += other[k];
     }
     KOKKOS_INLINE_FUNCTION void operator()(const int a, double *sums) const
     {
-      using namespace kokkos_cg;
+      using namespace cg_detail;
       double az[3];
       apply_atom(a, z, inertia, offsets, incidence, other, geometry, mass_weight, friction_weight,
                  az);
@@ -352,17 +329,17 @@ template <class DeviceType> class FrictionSolveKokkos {
       }
     }
   };
-  void apply_and_reduce(bool with_b, double sums[kokkos_cg::NSUMS], const GlobalSum &global_sum)
+  void apply_and_reduce(bool with_b, double sums[cg_detail::NSUMS], const GlobalSum &global_sum)
   {
     fill_slots(z_);
-    ApplyAndSum functor{kokkos_cg::NSUMS, z_, w_, r_, s_, b_, inertia_, held_, offsets_,
+    ApplyAndSum functor{cg_detail::NSUMS, z_, w_, r_, s_, b_, inertia_, held_, offsets_,
                         incidence_, other_, geometry_, mass_weight_, friction_weight_,
                         with_b};
     Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> result(
-        sums, kokkos_cg::NSUMS);
+        sums, cg_detail::NSUMS);
     Kokkos::parallel_reduce("etd:apply_and_sum", Kokkos::RangePolicy<execution_space>(0, nowned_),
                             functor, result);
-    global_sum(sums, with_b ? kokkos_cg::NSUMS : kokkos_cg::BB);
+    global_sum(sums, with_b ? cg_detail::NSUMS : cg_detail::BB);
   }
 
 

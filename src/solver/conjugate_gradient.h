@@ -80,6 +80,48 @@ inline void local_sums(int n, const double *inv_diag, const double *b, const dou
   if (with_b)
     for (int k = 0; k < n; k++) sums[BB] += b[k] * b[k];
 }
+
+// The iterations, whatever holds the vectors (this file's arrays, or Kokkos views:
+// friction_solve_kokkos.h). sums holds the first iteration's sums, BB among them (bb > 0);
+// ops supplies the vector work:
+//   ops.update(alpha, beta): p = z + beta p, s = w + beta s, x += alpha p, r -= alpha s
+//   ops.residual_norm2(): (r, r) on this rank
+//   ops.next_sums(sums): z = P r, w = A z and the iteration's sums over all ranks (without BB)
+template <typename Ops, typename GlobalSum>
+inline SolverResult iterate(Ops &ops, GlobalSum &global_sum, double sums[NSUMS], double tolerance,
+                            int max_iterations)
+{
+  SolverResult result;
+  const double bb = sums[BB];
+  const double target = tolerance * tolerance * bb;
+  double rr = sums[RR], rz_old = 1.0, alpha = 1.0;
+  while (rr > target && result.iterations < max_iterations) {
+    const double rz = sums[RZ];
+    const double beta = result.iterations == 0 ? 0.0 : rz / rz_old;
+    const double curvature = sums[WZ] - beta * rz / alpha;    // (p, A p) of the new direction
+    if (!(curvature > 0.0) || !(rz > 0.0))
+      break;    // breakdown: A not positive (cannot happen for SPD A)
+    alpha = rz / curvature;
+    rz_old = rz;
+    ops.update(alpha, beta);
+    result.iterations++;
+    // |r - alpha s|^2 with s = w + beta s_old, from this iteration's sums
+    const double rs = sums[RW] + beta * sums[RS];
+    const double ss = sums[WW] + 2.0 * beta * sums[WS] + beta * beta * sums[SS];
+    const double predicted = rr - 2.0 * alpha * rs + alpha * alpha * ss;
+    if (predicted <= target) {
+      double actual = ops.residual_norm2();
+      global_sum(&actual, 1);
+      rr = actual;
+      if (rr <= target || result.iterations >= max_iterations) break;
+    }
+    ops.next_sums(sums);
+    rr = sums[RR];
+  }
+  result.relative_residual = std::sqrt(rr / bb);
+  result.converged = rr <= target;
+  return result;
+}
 }    // namespace cg_detail
 
 // block_inverse (optional, 9 values per atom, n = 3 atoms): block-Jacobi preconditioning, which
@@ -109,13 +151,12 @@ conjugate_gradient(int n, Apply apply, GlobalSum global_sum, const double *inv_d
   };
   using namespace cg_detail;
   double sums[NSUMS];
-  auto apply_and_reduce = [&](bool with_b) {
+  auto apply_and_reduce = [&](bool with_b, double *out) {
     apply(z, w);
-    local_sums(n, inv_diag, b, r, z, w, s, with_b, sums);
-    global_sum(sums, with_b ? NSUMS : BB);
+    local_sums(n, inv_diag, b, r, z, w, s, with_b, out);
+    global_sum(out, with_b ? NSUMS : BB);
   };
 
-  SolverResult result;
   // start_product (optional): A x of the start, where the caller has it (then x must already
   // lie in the projected space)
   if (!start_product) {
@@ -125,48 +166,40 @@ conjugate_gradient(int n, Apply apply, GlobalSum global_sum, const double *inv_d
   const double *ax = start_product ? start_product : w;
   for (int k = 0; k < n; k++) r[k] = (inv_diag[k] != 0.0) ? b[k] - ax[k] : 0.0;
   precondition();
-  apply_and_reduce(true);
-  const double bb = sums[BB];
-  if (bb == 0.0) {
+  apply_and_reduce(true, sums);
+  if (sums[BB] == 0.0) {
     for (int k = 0; k < n; k++) x[k] = 0.0;
+    SolverResult result;
     result.converged = true;
     return result;
   }
-  const double target = tolerance * tolerance * bb;
-  double rr = sums[RR], rz_old = 1.0, alpha = 1.0;
-  while (rr > target && result.iterations < max_iterations) {
-    const double rz = sums[RZ];
-    const double beta = result.iterations == 0 ? 0.0 : rz / rz_old;
-    const double curvature = sums[WZ] - beta * rz / alpha;    // (p, A p) of the new direction
-    if (!(curvature > 0.0) || !(rz > 0.0))
-      break;    // breakdown: A not positive (cannot happen for SPD A)
-    alpha = rz / curvature;
-    rz_old = rz;
-    for (int k = 0; k < n; k++) {
-      p[k] = z[k] + beta * p[k];
-      s[k] = w[k] + beta * s[k];
-      x[k] += alpha * p[k];
-      r[k] -= alpha * s[k];
+  struct Ops {
+    int n;
+    double *x, *r, *z, *p, *w, *s;
+    decltype(precondition) &precondition_r;
+    decltype(apply_and_reduce) &apply_z;
+    void update(double alpha, double beta)
+    {
+      for (int k = 0; k < n; k++) {
+        p[k] = z[k] + beta * p[k];
+        s[k] = w[k] + beta * s[k];
+        x[k] += alpha * p[k];
+        r[k] -= alpha * s[k];
+      }
     }
-    result.iterations++;
-    // |r - alpha s|^2 with s = w + beta s_old, from this iteration's sums
-    const double rs = sums[RW] + beta * sums[RS];
-    const double ss = sums[WW] + 2.0 * beta * sums[WS] + beta * beta * sums[SS];
-    const double predicted = rr - 2.0 * alpha * rs + alpha * alpha * ss;
-    if (predicted <= target) {
-      double actual = 0.0;
-      for (int k = 0; k < n; k++) actual += r[k] * r[k];
-      global_sum(&actual, 1);
-      rr = actual;
-      if (rr <= target || result.iterations >= max_iterations) break;
+    double residual_norm2() const
+    {
+      double sum = 0.0;
+      for (int k = 0; k < n; k++) sum += r[k] * r[k];
+      return sum;
     }
-    precondition();
-    apply_and_reduce(false);
-    rr = sums[RR];
-  }
-  result.relative_residual = std::sqrt(rr / bb);
-  result.converged = rr <= target;
-  return result;
+    void next_sums(double *out)
+    {
+      precondition_r();
+      apply_z(false, out);
+    }
+  } ops{n, x, r, z, p, w, s, precondition, apply_and_reduce};
+  return iterate(ops, global_sum, sums, tolerance, max_iterations);
 }
 
 }    // namespace etd
