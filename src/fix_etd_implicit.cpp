@@ -324,6 +324,39 @@ void FixETDImplicit::initial_integrate(int)
 void FixETDImplicit::final_integrate()
 {
   record_end_velocity();
+  if (virial_this_step && !options.overdamped) add_drift_kinetic_stress();
+}
+
+// The pressure LAMMPS computes reads m v v of the velocities in v, the friction step's output;
+// the atoms move with other velocities (implicit_friction_tally.h), and the momentum they carry
+// differs under shear by several per cent at large steps. The difference joins this fix's
+// virial, so that pressure and stress/atom read the momentum flux of the step. Peculiar
+// velocities under fix deform ... remap v, as compute temp/deform takes them.
+void FixETDImplicit::add_drift_kinetic_stress()
+{
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  const int *mask = atom->mask;
+  const double *h_rate = domain->h_rate, *h_ratelo = domain->h_ratelo;
+  const bool streaming = domain->deform_vremap;
+  const double mvv2e = force->mvv2e;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double m = atom_mass(i);
+    double c[3] = {v[i][0], v[i][1], v[i][2]}, h[3];
+    if (streaming) {
+      double lamda[3];
+      domain->x2lamda(x[i], lamda);
+      c[0] -= h_rate[0] * lamda[0] + h_rate[5] * lamda[1] + h_rate[4] * lamda[2] + h_ratelo[0];
+      c[1] -= h_rate[1] * lamda[1] + h_rate[3] * lamda[2] + h_ratelo[1];
+      c[2] -= h_rate[2] * lamda[2] + h_ratelo[2];
+    }
+    for (int k = 0; k < 3; k++) h[k] = 0.5 * dt * f[i][k] / m;
+    double w[6];
+    etd::drift_kinetic_stress(m * mvv2e, c, h, w);
+    for (int k = 0; k < 6; k++) virial[k] += w[k];
+    if (peratom_virial)
+      for (int k = 0; k < 6; k++) vatom[i][k] += w[k];
+  }
 }
 
 void FixETDImplicit::record_end_velocity()

@@ -128,6 +128,7 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator, public etd
   double **end_velocity;
   bool warned_force_fixes = false;    // the lag under a steady force is said once per fix
   void record_end_velocity();
+  void add_drift_kinetic_stress();    // into the virial, at a step that tallies it
   double atom_mass(int i) const;    // per-atom or per-type mass
 
   // init()'s parts

@@ -28,7 +28,7 @@ from etddpd.accuracy_matrix import mean_and_error, relative_deviation  # noqa: E
 LOG = re.compile(r"^log\.(?P<prefix>(?:[A-Za-z0-9.]+\.)?)(?P<cell>(?:ref|stock|impv?|diag)[0-9.]*?)\.(?P<seed>[0-9]+)$")
 RESULT = re.compile(r"^RESULT .* kT (?P<kT>[-0-9.eE+]+) eta (?P<eta>[-0-9.eE+]+)")
 RESULT_FIELDS = re.compile(r"^RESULT integ (?P<integ>\S+) dt (?P<dt>\S+) rate (?P<rate>\S+) .*"
-                           r"kT (?P<kT>\S+) eta (?P<eta>\S+) slope (?P<slope>\S+)")
+                           r"kT (?P<kT>\S+) eta (?P<eta>\S+) slope (?P<slope>\S+)(?: eta_v (?P<eta_v>\S+))?")
 
 
 def log_records(directory):
@@ -48,6 +48,8 @@ def log_records(directory):
         if fields:
             record.update(integ=fields["integ"], dt=float(fields["dt"]), rate=float(fields["rate"]),
                           slope=float(fields["slope"]))
+            if fields["eta_v"]:
+                record["eta_v"] = float(fields["eta_v"])
         last = RESULT.match(lines[-1])
         record.update(kT=float(last["kT"]), eta=float(last["eta"]))
         records.append(record)
@@ -76,21 +78,23 @@ def merge_summary(path, records):
 
 
 def runs_from_records(records):
-    """{prefix: {cell: [(seed, eta, kT), ...]}} from summary records."""
+    """{prefix: {cell: [(seed, eta, kT, eta_v or None), ...]}} from summary records."""
     runs = {}
     for r in sorted(records, key=lambda r: (r["set"], r["cell"], r["seed"])):
-        runs.setdefault(r["set"], {}).setdefault(r["cell"], []).append((r["seed"], r["eta"], r["kT"]))
+        runs.setdefault(r["set"], {}).setdefault(r["cell"], []).append(
+            (r["seed"], r["eta"], r["kT"], r.get("eta_v")))
     return runs
 
 
 def read_runs(directory):
-    """{prefix: {cell: [(seed, eta, kT), ...]}} from the logs that finished (a RESULT line)."""
+    """{prefix: {cell: [(seed, eta, kT, eta_v), ...]}} from the logs that finished (a RESULT line)."""
     return runs_from_records(log_records(directory))
 
 
 def table(cells, reference=None):
-    """Rows (cell, n, eta, eta error, kT, deviation % from ref, its error %), ref first. The
-    reference is the set's cell "ref", or the runs `reference` [(seed, eta, kT), ...] given."""
+    """Rows (cell, n, eta, eta error, kT, deviation % from ref, its error %, and the same
+    deviation of eta_v where every seed of the cell has one), ref first. The reference is the
+    set's cell "ref", or the runs `reference` [(seed, eta, kT, eta_v), ...] given."""
     rows = []
     ref_etas = [r[1] for r in (cells.get("ref", []) if reference is None else reference)]
     for cell in sorted(cells, key=lambda c: (c != "ref", c)):
@@ -101,7 +105,12 @@ def table(cells, reference=None):
         if ref_etas and cell != "ref":
             against = relative_deviation(etas, ref_etas)
             deviation, deviation_error = 100.0 * against.value, 100.0 * against.error
-        rows.append((cell, len(etas), eta, error, kT, deviation, deviation_error))
+        end = None
+        ends = [r[3] for r in cells[cell]]
+        if ref_etas and cell != "ref" and all(e is not None for e in ends):
+            against = relative_deviation(ends, ref_etas)
+            end = (100.0 * against.value, 100.0 * against.error)
+        rows.append((cell, len(etas), eta, error, kT, deviation, deviation_error, end))
     return rows
 
 
@@ -132,11 +141,12 @@ def main(argv):
     for prefix in (argv or sorted(runs)):
         source = ref_from.get(prefix)
         print(f"\n## {prefix or '(GW m = 0.01, rate 2)'}" + (f" (against the reference of {source})" if source else "") + "\n")
-        print("| cell | integrator | dt | seeds | eta | kBT | against the reference |")
-        print("|---|---|---|---|---|---|---|")
+        print("| cell | integrator | dt | seeds | eta | kBT | against the reference | eta from m v v of v, against it |")
+        print("|---|---|---|---|---|---|---|---|")
         reference = runs[source]["ref"] if source else None
-        for cell, n, eta, error, kT, deviation, deviation_error in table(runs.get(prefix, {}), reference):
+        for cell, n, eta, error, kT, deviation, deviation_error, end in table(runs.get(prefix, {}), reference):
             against = "" if deviation is None else f"{deviation:+.1f} +- {deviation_error:.1f} %"
+            against += " | " + ("" if end is None else f"{end[0]:+.1f} +- {end[1]:.1f} %")
             integ, dt = steps.get((prefix, cell), ("", ""))
             print(f"| {cell} | {integ} | {dt:g} | {n} | {eta:.4g} +- {error:.2g} | {kT:.3f} | {against} |"
                   if dt != "" else f"| {cell} | {integ} | | {n} | {eta:.4g} +- {error:.2g} | {kT:.3f} | {against} |")
