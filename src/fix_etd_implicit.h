@@ -140,6 +140,9 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator, public etd
   void kick(double fraction);
   void drift(double fraction);
   void build_pairs();
+  // this step's pairs into the assembly (or elsewhere, KOKKOS); whether one has an atom
+  // outside the group
+  virtual bool assemble_pairs(const etd::FrictionPairAssembly::Context &context);
   void check_missing_pairs(bool local_fixed_partner);
   void dof_inertia(std::vector<double> &inertia) const;
   double *dof_pointer(int i, int k) const;
@@ -149,6 +152,7 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator, public etd
   // the step (fix_etd_implicit_step.cpp)
   void friction_noise_step();
   void friction_step_rhs();
+  virtual void friction_rhs();    // work.step_rhs, work.gu_rhs and work.impulse from work.u
   void conserve_momentum_and_measure();
   void overdamped_step();
   bool overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity,

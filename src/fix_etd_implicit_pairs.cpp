@@ -118,7 +118,12 @@ void FixETDImplicit::build_pairs()
   if (!partners.current(neighbor->ncalls)) partners.find(lmp, this, pairs, ghosts);
   const etd::FrictionPairAssembly::Context context{pairs, &partners, groupbit, list_newton_off,
                                                    update->ntimestep};
-  check_missing_pairs(assembly.build(lmp, context));
+  check_missing_pairs(assemble_pairs(context));
+}
+
+bool FixETDImplicit::assemble_pairs(const etd::FrictionPairAssembly::Context &context)
+{
+  return assembly.build(lmp, context);
 }
 
 // One reduction: whether a pair has an atom outside the group, and how far atoms are from where

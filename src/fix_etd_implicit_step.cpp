@@ -94,11 +94,9 @@ void FixETDImplicit::friction_step_rhs()
 {
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  const double h = dt;
   // the fixed atoms' velocities appear twice, once from the old and once from the new side of
   // the Pade update
-  std::vector<double> &u = work.u, &gu = work.gu_rhs, &rhs = work.step_rhs, &impulse = work.impulse;
-  const std::vector<double> &inertia = work.inertia;
+  std::vector<double> &u = work.u, &rhs = work.step_rhs;
   // One forward exchange brings the ghosts to the half-drifted positions and carries their
   // velocities (every exchange is a point where the ranks wait for each other)
   const int nall = nlocal + atom->nghost;
@@ -119,6 +117,16 @@ void FixETDImplicit::friction_step_rhs()
     if (mask[p < nlocal ? p : partners.ghost_of_slot(p - nlocal)] & groupbit) continue;
     for (int k = 0; k < dofs; k++) u[dofs * p + k] *= 2.0;
   }
+  friction_rhs();
+}
+
+// work.step_rhs from work.u, with G u in work.gu_rhs and sqrt(h) B xi in work.impulse
+void FixETDImplicit::friction_rhs()
+{
+  const int nlocal = atom->nlocal;
+  const double h = dt;
+  const std::vector<double> &u = work.u, &inertia = work.inertia;
+  std::vector<double> &gu = work.gu_rhs, &rhs = work.step_rhs, &impulse = work.impulse;
   gu.assign(dofs * nlocal, 0.0);
   assembly.accumulate_friction(u.data(), gu.data(), nlocal);
   assembly.random_impulse(std::sqrt(h), impulse, nlocal);

@@ -253,6 +253,16 @@ void FrictionPairAssembly::accumulate_blocks(std::vector<double> &diagonal, int 
   if (dofs_ == 6) accumulate_fpm_blocks(fpm_pairs_, diagonal.data(), keep_j);
 }
 
+void FrictionPairAssembly::adopt_pairs(std::vector<FrictionPair> pairs, std::vector<double> noise,
+                                       std::vector<double> distance, int nlocal)
+{
+  clear(false, nlocal);
+  pairs_ = std::move(pairs);
+  pair_noise_ = std::move(noise);
+  pair_distance_ = std::move(distance);
+  find_runs(pairs_, pair_runs_);
+}
+
 size_t FrictionPairAssembly::memory_usage() const
 {
   return sizeof(FrictionPair) * pairs_.capacity() + sizeof(double) * pair_noise_.capacity() +

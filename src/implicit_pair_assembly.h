@@ -66,6 +66,21 @@ class FrictionPairAssembly {
   const std::vector<double> &fpm_offset() const { return fpm_offset_; }
   size_t memory_usage() const;
 
+  // For an assembly elsewhere (the KOKKOS styles' kernels): each type pair's coefficients
+  // (nullptr: none; types 1..ntypes, ntypes1() = ntypes + 1), the largest squared friction
+  // cutoff, the noise, and the pairs it made, handed back (as build() would have made them,
+  // without dpd/fpm pairs or moving images) for what reads them on the host
+  const PairCoefficients *coefficients(int itype, int jtype) const
+  {
+    return pair_table_[itype * ntypes1_ + jtype];
+  }
+  bool has_fpm_pairs() const { return dofs_ == 6; }
+  int ntypes1() const { return ntypes1_; }
+  double friction_cutsq_max() const { return friction_cutsq_max_; }
+  const PairNoise &noise() const { return noise_; }
+  void adopt_pairs(std::vector<FrictionPair> pairs, std::vector<double> noise,
+                   std::vector<double> distance, int nlocal);
+
  private:
   std::vector<const PairCoefficients *> pair_table_;    // (ntypes+1)^2, nullptr: no DPD
   std::vector<const FpmCoefficients *> fpm_table_;      // the same for dpd/fpm pairs

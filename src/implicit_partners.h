@@ -63,6 +63,7 @@ class PartnerMap {
   int slots() const { return static_cast<int>(slot_ghost_.size()); }
   int of_ghost(int ghost, int nlocal) const { return ghost_partner_[ghost - nlocal]; }
   int ghost_of_slot(int slot) const { return slot_ghost_[slot]; }    // one image of it
+  const std::vector<int> &ghost_partners() const { return ghost_partner_; }    // of_ghost's table
   // the velocity a periodic image has on top of its owner's under fix deform ... remap v, as
   // LAMMPS's own ghost communication adds it (AtomVec::pack_comm_vel); false where it has none
   bool image_velocity(LAMMPS_NS::LAMMPS *lmp, int ghost, double offset[3]) const;

@@ -1,8 +1,13 @@
 // The implicit scheme's solve in Kokkos kernels (src/KOKKOS/friction_solve_kokkos.h) against the
 // CPU solve (friction_solve.h) on one DPD cluster: from the block-Jacobi start and from a given
-// start, with atoms held, and with remote partners (slots) filled by an exchange. Run with the
-// KOKKOS tests (label kokkos), on 1 and 2 threads.
+// start, with atoms held, and with remote partners (slots) filled by an exchange; the pairs
+// handed over in device memory, and the step's right-hand side, against the host's; and the
+// pairs' assembly in kernels (friction_pairs_kokkos.h) against the host assembly's rules. Run
+// with the KOKKOS tests (label kokkos), on 1 and 2 threads.
+#include "dpd_kernel.h"
+#include "dpd_random.h"
 #include "friction_operator.h"
+#include "friction_pairs_kokkos.h"
 #include "friction_solve.h"
 #include "friction_solve_kokkos.h"
 #include "reference_weights.h"
@@ -191,4 +196,209 @@ TEST(FrictionSolveKokkos, RemotePartnersFilledByTheExchange)
   const Solves without = solve_both(plain, std::vector<int>(plain.natoms, 1), true);
   for (size_t k = 0; k < without.cpu.size(); k++)
     EXPECT_NEAR(with_slots.kokkos[k], without.cpu[k], 1e-8 * (1.0 + std::fabs(without.cpu[k])));
+}
+
+namespace {
+
+// the pairs of a cluster in device memory, as friction_pairs_kokkos.h hands them over
+struct DevicePairs {
+  etd::FrictionSolveKokkos<Device>::Indices i, j;
+  etd::FrictionSolveKokkos<Device>::Geometry geometry;
+  explicit DevicePairs(const std::vector<etd::FrictionPair> &pairs)
+      : i("i", pairs.size()), j("j", pairs.size()), geometry("geometry", pairs.size())
+  {
+    auto hi = Kokkos::create_mirror_view(i);
+    auto hj = Kokkos::create_mirror_view(j);
+    auto hg = Kokkos::create_mirror_view(geometry);
+    for (size_t p = 0; p < pairs.size(); p++) {
+      hi(p) = pairs[p].i;
+      hj(p) = pairs[p].j;
+      for (int k = 0; k < 3; k++) hg(p, k) = pairs[p].e[k];
+      hg(p, 3) = pairs[p].friction;
+    }
+    Kokkos::deep_copy(i, hi);
+    Kokkos::deep_copy(j, hj);
+    Kokkos::deep_copy(geometry, hg);
+  }
+};
+
+}    // namespace
+
+// The incidence built in kernels from pairs in device memory orders each atom's sums as the host
+// one does: the same solution, bit for bit (with slots, and with an atom's pair with its own
+// periodic image, whose two ends are one atom)
+TEST(FrictionSolveKokkos, PairsInDeviceMemoryGiveTheSameSolve)
+{
+  Cluster c(true);
+  c.pairs.push_back({5, 5, {0.6f, 0.8f, 0.0f}, 1.5f});    // atom 5 and its own image
+  std::stable_sort(c.pairs.begin(), c.pairs.end(),
+                   [](const etd::FrictionPair &a, const etd::FrictionPair &b) { return a.i < b.i; });
+  const int n = 3 * c.natoms;
+  std::vector<double> inertia(n, 0.01), rhs(n);
+  std::mt19937_64 gen(3);
+  std::normal_distribution<double> normal;
+  for (double &b : rhs) b = normal(gen);
+  const std::vector<int> mobile(c.natoms, 1);
+  const auto serial_sum = [](double *, int) {};
+  const etd::FrictionSolveKokkos<Device>::Exchange exchange = [&](double *v) { c.exchange(v); };
+  std::vector<double> x[2];
+  for (int device = 0; device < 2; device++) {
+    etd::FrictionSolveKokkos<Device> kernels;
+    const DevicePairs pairs(c.pairs);
+    if (device)
+      kernels.set_pairs(pairs.i, pairs.j, pairs.geometry, int(c.pairs.size()), c.natoms,
+                        c.partners());
+    else
+      kernels.set_pairs(c.pairs, c.natoms, c.partners());
+    x[device].assign(n, 0.0);
+    kernels.solve(inertia.data(), mobile.data(), rhs.data(), 1.0, 0.0015, 1e-10, 500, exchange,
+                  serial_sum, x[device].data());
+  }
+  for (int k = 0; k < n; k++) ASSERT_EQ(x[1][k], x[0][k]) << "unknown " << k;
+}
+
+// b = M v - h/2 G u + sqrt(h) sum_pairs (+-) noise e against the host's sums
+TEST(FrictionSolveKokkos, RightHandSideMatchesTheHostSums)
+{
+  const Cluster c(true);
+  const int n = 3 * c.natoms;
+  const double h = 0.004;
+  std::mt19937_64 gen(5);
+  std::normal_distribution<double> normal;
+  std::vector<double> inertia(n, 0.01), v(n), u(3 * c.partners()), noise(c.pairs.size());
+  for (double &value : v) value = normal(gen);
+  for (int k = 0; k < n; k++) u[k] = v[k];
+  c.exchange(u.data());
+  for (double &value : noise) value = normal(gen);
+  const auto keep_j = owned_only(c.natoms);
+  std::vector<double> gu(n, 0.0), impulse(n, 0.0), expected(n);
+  etd::accumulate_friction(c.pairs, u.data(), gu.data(), keep_j);
+  etd::accumulate_noise(c.pairs, noise, std::sqrt(h), impulse.data(), keep_j);
+  for (int k = 0; k < n; k++) expected[k] = inertia[k] * v[k] - 0.5 * h * gu[k] + impulse[k];
+
+  etd::FrictionSolveKokkos<Device> kernels;
+  const DevicePairs pairs(c.pairs);
+  kernels.set_pairs(pairs.i, pairs.j, pairs.geometry, int(c.pairs.size()), c.natoms, c.partners());
+  etd::FrictionSolveKokkos<Device>::Values noise_view("noise", noise.size());
+  auto h_noise = Kokkos::create_mirror_view(noise_view);
+  for (size_t p = 0; p < noise.size(); p++) h_noise(p) = noise[p];
+  Kokkos::deep_copy(noise_view, h_noise);
+  std::vector<double> b(n), friction(n);
+  kernels.step_rhs(inertia.data(), v.data(), u.data(), noise_view, h, b.data(), friction.data());
+  for (int k = 0; k < n; k++) {
+    EXPECT_NEAR(b[k], expected[k], 1e-12 * (1.0 + std::fabs(expected[k]))) << "unknown " << k;
+    EXPECT_NEAR(friction[k], gu[k], 1e-12 * (1.0 + std::fabs(gu[k]))) << "unknown " << k;
+  }
+}
+
+// The pairs' assembly in kernels against its rules written out here: a half list of candidates
+// (some beyond the cutoff, one weighted by a special-bond factor, one excluded), two types whose
+// cross pair has no friction, atoms outside the group, and ghosts: an image of another owned
+// atom (newton off: kept from the lower ID's end only) and a remote atom's image (a slot)
+TEST(FrictionPairsKokkos, AssemblesThePairsTheHostRulesGive)
+{
+  const int nlocal = 40, nall = 44;
+  std::mt19937_64 gen(9);
+  std::uniform_real_distribution<double> uniform(0.0, 2.0);
+  std::vector<double> x(3 * nall);
+  for (double &value : x) value = uniform(gen);
+  for (int k = 0; k < 3; k++) {    // the special-bond pairs (4, 5) and (6, 8) within the cutoff
+    x[3 * 5 + k] = x[3 * 4 + k] + (k == 0 ? 0.3 : 0.0);
+    x[3 * 8 + k] = x[3 * 6 + k] + (k == 1 ? 0.4 : 0.0);
+  }
+  std::vector<int> type(nall, 1), mask(nall, 1), tag(nall);
+  for (int a = 0; a < nall; a++) tag[a] = a + 1;
+  type[7] = type[19] = 2;
+  mask[3] = mask[11] = 0;    // outside the group (groupbit 1)
+  // ghosts 40, 41: images of owned atoms 2 and 30; 42, 43: of remote atoms (slots 40, 41)
+  const std::vector<int> ghost_partner = {2, 30, 40, 41};
+  tag[40] = tag[2];
+  tag[41] = tag[30];
+  tag[42] = 101;
+  tag[43] = 102;
+  const int sb = 30, mask_bits = (1 << sb) - 1;
+  std::vector<std::vector<int>> neighbors(nlocal);
+  for (int i = 0; i < nlocal; i++)
+    for (int j = i + 1; j < nall; j++) neighbors[i].push_back(j);
+  neighbors[4][0] |= 1 << sb;    // special factor 0.5
+  neighbors[6][1] |= 2 << sb;    // special factor 0: excluded
+  std::vector<int> ilist(nlocal), numneigh(nlocal);
+  std::vector<int *> firstneigh(nlocal);
+  for (int i = 0; i < nlocal; i++) {
+    ilist[i] = i;
+    numneigh[i] = int(neighbors[i].size());
+    firstneigh[i] = neighbors[i].data();
+  }
+  const double special[4] = {1.0, 0.5, 0.0, 1.0};
+  etd::PairCoefficients same, cross;
+  same.set(25.0, 4.5, 0.5, 1.0, 1.0, 0.9, 1.0);
+  cross.set(25.0, 0.0, 2.0, 1.0, 1.0, 1.0, 1.0);    // no friction: no pairs
+  const std::vector<const etd::PairCoefficients *> table = {nullptr, nullptr, nullptr,
+                                                            nullptr, &same,   &cross,
+                                                            nullptr, &cross,  &same};
+  const etd::PairNoise noise(77, etd::NoiseStream::Integrator);
+  const std::int64_t step = 12;
+
+  etd::FrictionPairsKokkos<Device> kernels;
+  kernels.set_coefficients(table, 3, noise);
+  etd::FrictionPairsKokkos<Device>::Input in;
+  in.nlocal = nlocal;
+  in.nall = nall;
+  in.inum = nlocal;
+  in.ilist = ilist.data();
+  in.numneigh = numneigh.data();
+  in.firstneigh = firstneigh.data();
+  in.neighbor_mask = mask_bits;
+  in.special_shift = sb;
+  in.special = special;
+  in.x = x.data();
+  in.type = type.data();
+  in.mask = mask.data();
+  in.ghost_partner = ghost_partner.data();
+  in.groupbit = 1;
+  in.newton_off = true;
+  in.step = step;
+  in.cutsq_max = 0.81;
+  const bool fixed = kernels.build(in, tag.data());
+  std::vector<etd::FrictionPair> pairs;
+  std::vector<double> pair_noise, distance;
+  kernels.copy_to_host(pairs, pair_noise, distance);
+
+  // the rules
+  size_t p = 0;
+  int special_pairs = 0, image_pairs = 0, slot_pairs = 0;
+  bool expect_fixed = false;
+  for (int i = 0; i < nlocal; i++)
+    for (const int j_bits : neighbors[i]) {
+      const int j = j_bits & mask_bits;
+      const double factor = special[(j_bits >> sb) & 3];
+      const double d[3] = {x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1],
+                           x[3 * i + 2] - x[3 * j + 2]};
+      const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      const int partner = j < nlocal ? j : ghost_partner[j - nlocal];
+      if (rsq >= 0.81 || factor == 0.0 || (!mask[i] && !mask[j]) || type[i] != type[j]) continue;
+      if (j >= nlocal && partner < nlocal && tag[i] >= tag[partner]) continue;
+      ASSERT_LT(p, pairs.size());
+      const double r = std::sqrt(rsq);
+      const etd::PairDissipation w = etd::pair_dissipation(same, r, factor);
+      EXPECT_EQ(pairs[p].i, i);
+      EXPECT_EQ(pairs[p].j, partner);
+      for (int k = 0; k < 3; k++) EXPECT_EQ(pairs[p].e[k], float(d[k] * (1.0 / r)));
+      EXPECT_EQ(pairs[p].friction, float(w.friction));
+      EXPECT_EQ(pair_noise[p], w.noise * noise.gaussian(tag[i], tag[j], step));
+      EXPECT_EQ(distance[p], r);
+      expect_fixed = expect_fixed || !mask[i] || !mask[j];
+      special_pairs += factor == 0.5;
+      image_pairs += j >= nlocal && partner < nlocal;
+      slot_pairs += partner >= nlocal;
+      p++;
+    }
+  EXPECT_EQ(p, pairs.size());
+  EXPECT_EQ(fixed, expect_fixed);
+  EXPECT_TRUE(expect_fixed);
+  // (the configuration has each kind of pair the rules treat apart)
+  EXPECT_GT(pairs.size(), 50u);
+  EXPECT_EQ(special_pairs, 1);
+  EXPECT_GT(image_pairs, 0);
+  EXPECT_GT(slot_pairs, 0);
 }

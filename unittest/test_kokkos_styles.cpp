@@ -101,13 +101,14 @@ bool fix_ran_kernel(Lammps &l)
   return fix && fix->kokkosable && fix->datamask_read != ALL_MASK;
 }
 
-// how many of fix "integrate"'s solves of the last run ran in Kokkos kernels (fix etd/kk scheme
-// implicit; 0 for any other fix)
-double kernel_solves(Lammps &l)
+// how many of fix "integrate"'s solves ("kernel_solves"), or pair assemblies with their
+// right-hand sides ("kernel_assemblies"), of the last run ran in Kokkos kernels (fix etd/kk
+// scheme implicit; 0 for any other fix)
+double kernel_solves(Lammps &l, const char *what = "kernel_solves")
 {
   LAMMPS_NS::Fix *fix = l.lmp->modify->get_fix_by_id("integrate");
   int dim = -1;
-  const void *count = fix ? fix->extract("kernel_solves", dim) : nullptr;
+  const void *count = fix ? fix->extract(what, dim) : nullptr;
   return count ? *static_cast<const double *>(count) : 0.0;
 }
 
@@ -124,6 +125,7 @@ struct Pair {
   bool kernel = false;            // the /kk style ran its Kokkos kernel
   bool fix_kernel = false;        // fix "integrate" ran its step in Kokkos kernels
   double kernel_solves = 0.0;     // fix etd/kk scheme implicit: its solves in Kokkos kernels
+  double kernel_assemblies = 0.0;    // and its pair assemblies
 };
 Pair run_both(const std::vector<std::string> &pair, const std::vector<std::string> &run,
               double mass = 1.0, double dt = 0.01)
@@ -140,6 +142,7 @@ Pair run_both(const std::vector<std::string> &pair, const std::vector<std::strin
     if (kokkos) out.kernel = pair_ran_kernel(l);
     if (kokkos) out.fix_kernel = fix_ran_kernel(l);
     if (kokkos) out.kernel_solves = kernel_solves(l);
+    if (kokkos) out.kernel_assemblies = kernel_solves(l, "kernel_assemblies");
   }
   return out;
 }
@@ -190,11 +193,35 @@ TEST(KokkosStyles, TrajectoriesFollowTheCpuStyle)
       EXPECT_EQ(p.kernel, c.kernel) << c.fix;
       EXPECT_EQ(p.fix_kernel, c.fix_kernel) << c.fix;
       EXPECT_EQ(p.kernel_solves > 0.0, c.solve_kernel) << c.fix;
+      // (the pairs, their noise and the right-hand side too; at the last step, which tallies
+      // the virial, the pairs are also copied back to the host, which sums it)
+      EXPECT_EQ(p.kernel_assemblies > 0.0, c.solve_kernel) << c.fix;
+      if (c.solve_kernel)
+        EXPECT_LT(max_rel_diff(p.kk.virial, p.cpu.virial), 1e-6) << c.fix << ", " << pair.back();
       EXPECT_LT(max_rel_diff(p.kk.x, p.cpu.x), 1e-8) << c.fix << ", " << pair.back();
       EXPECT_LT(max_rel_diff(p.kk.v, p.cpu.v), 1e-8) << c.fix << ", " << pair.back();
       // the velocities moved far from their start (else the comparison would prove nothing)
       EXPECT_GT(max_rel_diff(p.kk.v, p.start_v), 0.1) << c.fix << ", " << pair.back();
     }
+  }
+}
+
+// Atoms outside the fix's group (type 2 held at rest) are partners of the group's pairs: the
+// kernels' assembly reports them (the momentum correction is then left out), as the host's
+// does; with a compute dpd/split every step copies the pairs back to the host
+TEST(KokkosStyles, ImplicitKernelsHoldAtomsOutsideTheGroup)
+{
+  for (const bool split : {false, true}) {
+    const Pair p = run_both(
+        GEN_S2,
+        {"group mobile type 1", "velocity all set 0.0 0.0 0.0 sum no",
+         "velocity mobile create 1.0 5 mom yes dist gaussian",
+         "fix integrate mobile etd scheme implicit tol 1e-10",
+         split ? "compute split all dpd/split" : "variable none equal 0", "run 10 post no"},
+        0.01, 0.005);
+    EXPECT_GT(p.kernel_assemblies, 0.0) << split;
+    EXPECT_LT(max_rel_diff(p.kk.x, p.cpu.x), 1e-8) << split;
+    EXPECT_LT(max_rel_diff(p.kk.v, p.cpu.v), 1e-8) << split;
   }
 }
 

@@ -3,7 +3,10 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
+#include "force.h"
+#include "neighbor.h"
 
 #include <cstring>
 
@@ -14,6 +17,10 @@ template <class DeviceType> void *FixETDImplicitKokkos<DeviceType>::extract(cons
   if (std::strcmp(name, "kernel_solves") == 0) {
     dim = 0;
     return &kernel_solves;
+  }
+  if (std::strcmp(name, "kernel_assemblies") == 0) {
+    dim = 0;
+    return &kernel_assemblies;
   }
   return FixETDImplicit::extract(name, dim);
 }
@@ -34,8 +41,82 @@ template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::init()
 
 template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::setup(int vflag)
 {
-  kernel_solves = 0.0;
+  kernel_solves = kernel_assemblies = 0.0;
+  pairs_on_device = false;
+  if (assembles_in_kernels()) {
+    const int ntypes1 = assembly.ntypes1();
+    std::vector<const etd::PairCoefficients *> table(ntypes1 * ntypes1, nullptr);
+    for (int i = 1; i < ntypes1; i++)
+      for (int j = 1; j < ntypes1; j++) table[i * ntypes1 + j] = assembly.coefficients(i, j);
+    pairs_kk.set_coefficients(table, ntypes1, assembly.noise());
+  }
   FixETDImplicit::setup(vflag);
+}
+
+// the kernels assemble dpd/gen-type pairs for the inertial scheme without moving images
+template <class DeviceType> bool FixETDImplicitKokkos<DeviceType>::assembles_in_kernels() const
+{
+  return !options.overdamped && dofs == 3 && !assembly.has_fpm_pairs() && !domain->deform_vremap;
+}
+
+template <class DeviceType>
+bool FixETDImplicitKokkos<DeviceType>::assemble_pairs(
+    const etd::FrictionPairAssembly::Context &context)
+{
+  pairs_on_device = pairs_on_host = false;
+  if (!assembles_in_kernels()) return FixETDImplicit::assemble_pairs(context);
+  typename etd::FrictionPairsKokkos<DeviceType>::Input in;
+  in.nlocal = atom->nlocal;
+  in.nall = atom->nlocal + atom->nghost;
+  in.inum = context.list.inum;
+  in.ilist = context.list.ilist;
+  in.numneigh = context.list.numneigh;
+  in.firstneigh = context.list.firstneigh;
+  in.neighbor_mask = NEIGHMASK;
+  in.special_shift = SBBITS;
+  in.special = force->special_lj;
+  in.x = in.nall > 0 ? atom->x[0] : nullptr;
+  in.type = atom->type;
+  in.mask = atom->mask;
+  in.ghost_partner = partners.ghost_partners().data();
+  in.groupbit = groupbit;
+  in.newton_off = context.list_newton_off;
+  in.step = context.step;
+  in.cutsq_max = assembly.friction_cutsq_max();
+  const bool fixed_partner = pairs_kk.build(in, atom->tag);
+  pairs_on_device = true;
+  kernel_assemblies += 1.0;
+  // the virial and the force split are summed on the host from the assembly's pairs
+  if (virial_this_step || split_requested) {
+    std::vector<etd::FrictionPair> pairs;
+    std::vector<double> noise, distance;
+    pairs_kk.copy_to_host(pairs, noise, distance);
+    assembly.adopt_pairs(std::move(pairs), std::move(noise), std::move(distance), atom->nlocal);
+    pairs_on_host = true;
+  } else {
+    assembly.adopt_pairs({}, {}, {}, atom->nlocal);    // none on the host this step
+  }
+  return fixed_partner;
+}
+
+template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::friction_rhs()
+{
+  if (!pairs_on_device || pairs_on_host) {
+    FixETDImplicit::friction_rhs();
+    return;
+  }
+  const int nlocal = atom->nlocal;
+  kernels.set_pairs(pairs_kk.pair_i(), pairs_kk.pair_j(), pairs_kk.geometry(), pairs_kk.pairs(),
+                    nlocal, partners.count(nlocal));
+  std::vector<double> &v = work.solution;    // (scratch until the solve)
+  v.resize(3 * nlocal);
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < 3; k++) v[3 * i + k] = atom->v[i][k];
+  work.step_rhs.resize(3 * nlocal);
+  // G u for the solve's start from the old velocities
+  work.gu_rhs.resize(3 * nlocal);
+  kernels.step_rhs(work.inertia.data(), v.data(), work.u.data(), pairs_kk.noise(), dt,
+                   work.step_rhs.data(), options.warm_start ? work.gu_rhs.data() : nullptr);
 }
 
 template <class DeviceType>
@@ -52,7 +133,12 @@ etd::SolverResult FixETDImplicitKokkos<DeviceType>::solve_system(
   const int npartners = partners.count(nlocal);
   mobile.resize(nlocal);
   for (int i = 0; i < nlocal; i++) mobile[i] = (atom->mask[i] & groupbit) ? 1 : 0;
-  kernels.set_pairs(assembly.pairs(), nlocal, npartners);
+  // (the kernels' pairs are in place where the right-hand side was summed there)
+  if (!pairs_on_device)
+    kernels.set_pairs(assembly.pairs(), nlocal, npartners);
+  else if (pairs_on_host)
+    kernels.set_pairs(pairs_kk.pair_i(), pairs_kk.pair_j(), pairs_kk.geometry(), pairs_kk.pairs(),
+                      nlocal, npartners);
   solution.resize(3 * nlocal);
   kernel_solves += 1.0;
   const typename etd::FrictionSolveKokkos<DeviceType>::Exchange exchange =

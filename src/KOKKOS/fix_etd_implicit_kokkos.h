@@ -1,13 +1,16 @@
-// ETD-DPD: fix etd/kk scheme implicit. The friction step's solve, the block-Jacobi
-// preconditioner, G applied atom by atom and conjugate gradients (friction_solve_kokkos.h), runs
-// in Kokkos kernels in DeviceType's execution space, for translation (dpd/gen pairs, inertial).
-// The rest of the step is the CPU scheme's, on the host: the pair search and assembly, the
-// right-hand side and the momentum correction; so are the zero-mass limit (overdamped yes) and
-// dpd/fpm's rotation, which solve on the host with the CPU solver.
+// ETD-DPD: fix etd/kk scheme implicit. For translation (dpd/gen pairs, inertial, no moving
+// images) the friction step runs in Kokkos kernels in DeviceType's execution space: the pairs'
+// assembly with their noise (friction_pairs_kokkos.h), the right-hand side, the block-Jacobi
+// preconditioner, G applied atom by atom and conjugate gradients (friction_solve_kokkos.h). The
+// pair search, the momentum correction and the drifts stay on the host; at steps that tally
+// the virial or the force split the pairs are copied back to the host, where those are summed.
+// Under fix deform ... remap v the pairs are assembled on the host; the zero-mass limit
+// (overdamped yes) and dpd/fpm's rotation solve on the host with the CPU solver.
 #ifndef ETD_FIX_ETD_IMPLICIT_KOKKOS_H
 #define ETD_FIX_ETD_IMPLICIT_KOKKOS_H
 
 #include "fix_etd_implicit.h"
+#include "friction_pairs_kokkos.h"
 #include "friction_solve_kokkos.h"
 
 #include "kokkos_type.h"
@@ -17,21 +20,28 @@ namespace LAMMPS_NS {
 template <class DeviceType> class FixETDImplicitKokkos : public FixETDImplicit {
  public:
   FixETDImplicitKokkos(class LAMMPS *lmp, int narg, char **arg) : FixETDImplicit(lmp, narg, arg) {}
-  // "kernel_solves" (dim 0, a double): how many solves of this run ran in the kernels
+  // "kernel_solves", "kernel_assemblies" (dim 0, a double): how many solves, and pair
+  // assemblies with their right-hand sides, of this run ran in the kernels
   void *extract(const char *name, int &dim) override;
   void init() override;
   void setup(int vflag) override;
 
  protected:
+  bool assemble_pairs(const etd::FrictionPairAssembly::Context &context) override;
+  void friction_rhs() override;
   etd::SolverResult solve_system(const std::vector<double> &rhs, std::vector<double> &solution,
                                  double mass_weight, double friction_weight, bool deflate,
                                  const std::vector<double> *start,
                                  const std::vector<double> *start_friction) override;
 
  private:
+  etd::FrictionPairsKokkos<DeviceType> pairs_kk;
   etd::FrictionSolveKokkos<DeviceType> kernels;
   std::vector<int> mobile;    // per owned atom: in the group
-  double kernel_solves = 0.0;
+  bool pairs_on_device = false;    // this step's pairs: assembled in the kernels (else the host)
+  bool pairs_on_host = false;      // and copied back to the assembly
+  double kernel_solves = 0.0, kernel_assemblies = 0.0;
+  bool assembles_in_kernels() const;
 };
 
 }    // namespace LAMMPS_NS

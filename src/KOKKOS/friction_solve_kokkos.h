@@ -55,24 +55,147 @@ template <class DeviceType> class FrictionSolveKokkos {
     const int entries = h_offsets(nowned);
     resize(incidence_, entries);
     resize(other_, entries);
+    resize(end_, entries);
     auto h_incidence = Kokkos::create_mirror_view(incidence_);
     auto h_other = Kokkos::create_mirror_view(other_);
+    auto h_end = Kokkos::create_mirror_view(end_);
     fill_.assign(h_offsets.data(), h_offsets.data() + nowned);
-    // each entry: the pair and the atom at its other end
+    // each entry: the pair, the atom at its other end, and which end the atom is
     for (int p = 0; p < npairs; p++) {
       const int at_i = fill_[pairs[p].i]++;
       h_incidence(at_i) = p;
       h_other(at_i) = pairs[p].j;
+      h_end(at_i) = 1;
       if (pairs[p].j < nowned) {
         const int at_j = fill_[pairs[p].j]++;
         h_incidence(at_j) = p;
         h_other(at_j) = pairs[p].i;
+        h_end(at_j) = -1;
       }
     }
     Kokkos::deep_copy(geometry_, h_geometry);
     Kokkos::deep_copy(offsets_, h_offsets);
     Kokkos::deep_copy(incidence_, h_incidence);
     Kokkos::deep_copy(other_, h_other);
+    Kokkos::deep_copy(end_, h_end);
+  }
+
+  // The step's pairs already in DeviceType's memory (friction_pairs_kokkos.h): the incidence
+  // list built in kernels, each atom's entries in pair order, as the host set_pairs() orders
+  // them. The geometry view is kept, not copied.
+  void set_pairs(const Indices &pair_i, const Indices &pair_j, const Geometry &geometry,
+                 int npairs, int nowned, int npartners)
+  {
+    nowned_ = nowned;
+    npartners_ = npartners;
+    geometry_ = geometry;
+    resize(offsets_, nowned + 1);
+    Kokkos::deep_copy(offsets_, 0);
+    auto offsets = offsets_;
+    Kokkos::parallel_for(
+        "etd:incidence_count", Kokkos::RangePolicy<execution_space>(0, npairs),
+        KOKKOS_LAMBDA(const int p) {
+          Kokkos::atomic_increment(&offsets(pair_i(p) + 1));
+          if (pair_j(p) < nowned) Kokkos::atomic_increment(&offsets(pair_j(p) + 1));
+        });
+    int entries = 0;
+    Kokkos::parallel_scan(
+        "etd:incidence_place", Kokkos::RangePolicy<execution_space>(0, nowned + 1),
+        KOKKOS_LAMBDA(const int a, int &sum, const bool final) {
+          sum += offsets(a);
+          if (final) offsets(a) = sum;
+        },
+        entries);
+    resize(incidence_, entries);
+    resize(other_, entries);
+    resize(end_, entries);
+    resize(cursor_, nowned);
+    auto cursor = cursor_;
+    Kokkos::parallel_for(
+        "etd:incidence_cursor", Kokkos::RangePolicy<execution_space>(0, nowned),
+        KOKKOS_LAMBDA(const int a) { cursor(a) = offsets(a); });
+    auto incidence = incidence_;
+    auto other = other_;
+    auto end = end_;
+    Kokkos::parallel_for(
+        "etd:incidence_fill", Kokkos::RangePolicy<execution_space>(0, npairs),
+        KOKKOS_LAMBDA(const int p) {
+          const int i = pair_i(p), j = pair_j(p);
+          const int at_i = Kokkos::atomic_fetch_add(&cursor(i), 1);
+          incidence(at_i) = p;
+          other(at_i) = j;
+          end(at_i) = 1;
+          if (j < nowned) {
+            const int at_j = Kokkos::atomic_fetch_add(&cursor(j), 1);
+            incidence(at_j) = p;
+            other(at_j) = i;
+            end(at_j) = -1;
+          }
+        });
+    // the atomics placed each atom's entries in any order: back to pair order (a pair with an
+    // image of its own atom has both ends there, i's first), so that every sum has one order
+    Kokkos::parallel_for(
+        "etd:incidence_sort", Kokkos::RangePolicy<execution_space>(0, nowned),
+        KOKKOS_LAMBDA(const int a) {
+          for (int e = offsets(a) + 1; e < offsets(a + 1); e++) {
+            const int p = incidence(e), o = other(e), side = end(e);
+            int f = e;
+            for (; f > offsets(a) && (incidence(f - 1) > p ||
+                                      (incidence(f - 1) == p && end(f - 1) < side));
+                 f--) {
+              incidence(f) = incidence(f - 1);
+              other(f) = other(f - 1);
+              end(f) = end(f - 1);
+            }
+            incidence(f) = p;
+            other(f) = o;
+            end(f) = side;
+          }
+        });
+  }
+
+  // The friction step's right-hand side over the owned atoms, b = M v - (h/2) G u +
+  // sqrt(h) sum_pairs (+-) noise e (+ on the pair's i, - on its j), with u given on all partners
+  // and the pairs' noise sigma w_R theta; with gu (optional) also G u. Host arrays: inertia, v,
+  // b, gu 3 nowned values, u 3 npartners.
+  void step_rhs(const double *inertia, const double *v, const double *u, const Values &noise,
+                double h, double *b, double *gu)
+  {
+    const int n = 3 * nowned_;
+    upload(inertia_, inertia, n);
+    upload(b_, v, n);    // b_ holds v until it is overwritten with b
+    upload(x_, u, 3 * npartners_);
+    resize(w_, n);
+    auto offsets = offsets_;
+    auto incidence = incidence_;
+    auto other = other_;
+    auto end = end_;
+    auto geometry = geometry_;
+    auto inertia_view = inertia_;
+    auto given = x_;
+    auto rhs = b_;
+    auto friction = w_;
+    const double half_h = 0.5 * h, root_h = std::sqrt(h);
+    Kokkos::parallel_for(
+        "etd:step_rhs", Kokkos::RangePolicy<execution_space>(0, nowned_),
+        KOKKOS_LAMBDA(const int a) {
+          double g[3];
+          apply_atom(a, given, inertia_view, offsets, incidence, other, geometry, 0.0, 1.0, g);
+          double impulse[3] = {0.0, 0.0, 0.0};
+          for (int e = offsets(a); e < offsets(a + 1); e++) {
+            const int p = incidence(e);
+            const double amount = root_h * noise(p);
+            for (int k = 0; k < 3; k++)
+              impulse[k] += end(e) > 0 ? amount * geometry(p, k) : -(amount * geometry(p, k));
+          }
+          for (int k = 0; k < 3; k++) {
+            const int d = 3 * a + k;
+            friction(d) = g[k];
+            rhs(d) = inertia_view(d) * rhs(d) - half_h * g[k] + impulse[k];
+          }
+        });
+    download(b_, b, n);
+    if (gu) download(w_, gu, n);
   }
 
   // Solves over the 3 nowned unknowns; atoms with mobile[a] = 0, or with neither mass nor
@@ -126,7 +249,7 @@ template <class DeviceType> class FrictionSolveKokkos {
       } ops{*this, global_sum};
       result = cg_detail::iterate(ops, global_sum, sums, tolerance, max_iterations);
     }
-    download(x, n);
+    download(x_, x, n);
     return result;
   }
 
@@ -348,7 +471,8 @@ template <class DeviceType> class FrictionSolveKokkos {
   double mass_weight_ = 1.0, friction_weight_ = 0.0;
   const Exchange *exchange_ = nullptr;
   Geometry geometry_;     // e0, e1, e2, gamma w_D per pair
-  Indices offsets_, incidence_, other_;    // per owned atom, its pairs and their other atoms
+  // per owned atom, its pairs, their other atoms and which end of each it is (1: i, -1: j)
+  Indices offsets_, incidence_, other_, end_, cursor_;
   std::vector<int> fill_;
   Indices mobile_;
   Values inertia_, b_, inverse_, held_;    // held_: 1 on unknowns held at their start
@@ -364,10 +488,10 @@ template <class DeviceType> class FrictionSolveKokkos {
     Kokkos::View<const double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> given(host, n);
     Kokkos::deep_copy(Kokkos::subview(view, Kokkos::make_pair(0, n)), given);
   }
-  void download(double *host, int n) const
+  static void download(const Values &view, double *host, int n)
   {
     Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> out(host, n);
-    Kokkos::deep_copy(out, Kokkos::subview(x_, Kokkos::make_pair(0, n)));
+    Kokkos::deep_copy(out, Kokkos::subview(view, Kokkos::make_pair(0, n)));
   }
 
   // a partner vector's slots from their owners (through the host); every rank calls it, with

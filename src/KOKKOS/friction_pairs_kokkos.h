@@ -1,0 +1,318 @@
+// ETD-DPD: the implicit scheme's pairs of one step, assembled in Kokkos kernels. From the step's
+// candidate pairs (a half list, j with LAMMPS's special bits) each pair's geometry, friction
+// gamma w_D and noise sigma w_R theta, with the tests and arithmetic of
+// FrictionPairAssembly::build() and in its order (atom by atom, in the list's order), so the
+// noise and the solve's sums are the host assembly's. Pure Kokkos (no LAMMPS); dpd/gen-type
+// pairs only (no dpd/fpm, no moving images). Two passes over the candidates: a count per atom,
+// whose scan places each atom's pairs, then the fill.
+#ifndef ETD_FRICTION_PAIRS_KOKKOS_H
+#define ETD_FRICTION_PAIRS_KOKKOS_H
+
+#include "dpd_kernel.h"
+#include "dpd_random.h"
+#include "friction_operator.h"
+#include "normal_ziggurat.h"
+
+#include <Kokkos_Core.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace etd {
+
+template <class DeviceType> class FrictionPairsKokkos {
+ public:
+  using execution_space = typename DeviceType::execution_space;
+  using Indices = Kokkos::View<int *, DeviceType>;
+  using Values = Kokkos::View<double *, DeviceType>;
+  using Geometry = Kokkos::View<float *[4], Kokkos::LayoutRight, DeviceType>;
+  using Tags = Kokkos::View<std::int64_t *, DeviceType>;
+  using Table = Kokkos::View<PairCoefficients *, DeviceType>;
+
+  // One step's inputs, in host memory (LAMMPS's arrays; nall = owned + ghost atoms)
+  struct Input {
+    int nlocal = 0, nall = 0;
+    int inum = 0;
+    const int *ilist = nullptr, *numneigh = nullptr;
+    int *const *firstneigh = nullptr;
+    int neighbor_mask = 0, special_shift = 0;    // LAMMPS's NEIGHMASK and SBBITS
+    const double *special = nullptr;             // special_lj[4]
+    const double *x = nullptr;                   // 3 nall
+    const int *type = nullptr, *mask = nullptr;  // nall
+    const int *ghost_partner = nullptr;          // nall - nlocal: the partner each ghost is
+    int groupbit = 0;
+    bool newton_off = false;    // an image pair is listed from both ends
+    std::int64_t step = 0;
+    double cutsq_max = 0.0;    // the largest squared friction cutoff
+  };
+
+  // Each type pair's coefficients (nullptr: no friction pair; ntypes1 = ntypes + 1) and the
+  // noise, with the ziggurat's tables where DeviceType reads them; once per run
+  void set_coefficients(const std::vector<const PairCoefficients *> &table, int ntypes1,
+                        const PairNoise &noise)
+  {
+    ntypes1_ = ntypes1;
+    coefficients_ = Table("etd:pair_coefficients", table.size());
+    present_ = Indices("etd:pair_present", table.size());
+    auto h_coefficients = Kokkos::create_mirror_view(coefficients_);
+    auto h_present = Kokkos::create_mirror_view(present_);
+    for (size_t k = 0; k < table.size(); k++) {
+      h_present(k) = (table[k] && table[k]->gamma != 0.0) ? 1 : 0;
+      h_coefficients(k) = table[k] ? *table[k] : PairCoefficients{};
+    }
+    Kokkos::deep_copy(coefficients_, h_coefficients);
+    Kokkos::deep_copy(present_, h_present);
+    noise_ = noise;
+    if constexpr (!Kokkos::SpaceAccessibility<execution_space, Kokkos::HostSpace>::accessible) {
+      using Tables = ZigguratTables;
+      const Tables host = Tables::host();
+      constexpr int N = Tables::NORMAL_SIZE, E = Tables::EXPONENTIAL_SIZE;
+      Kokkos::View<double *, Kokkos::HostSpace> staged("etd:ziggurat (host)", 2 * N + 2 * E);
+      for (int k = 0; k < N; k++) {
+        staged(k) = host.normal_x[k];
+        staged(N + k) = host.normal_y[k];
+      }
+      for (int k = 0; k < E; k++) {
+        staged(2 * N + k) = host.exponential_x[k];
+        staged(2 * N + E + k) = host.exponential_y[k];
+      }
+      ziggurat_ = Values("etd:ziggurat", 2 * N + 2 * E);
+      Kokkos::deep_copy(ziggurat_, staged);
+      const double *d = ziggurat_.data();
+      noise_.use_tables({d, d + N, d + 2 * N, d + 2 * N + E});
+    }
+  }
+
+  // This step's pairs; tag: the atom IDs (nall). Returns whether a pair couples the group to an
+  // atom outside it.
+  template <typename Tag> bool build(const Input &in, const Tag *tag)
+  {
+    flatten_list(in);
+    upload(x_, in.x, 3 * in.nall);
+    upload(type_, in.type, in.nall);
+    upload(mask_, in.mask, in.nall);
+    upload(ghost_partner_, in.ghost_partner, in.nall - in.nlocal);
+    resize(tag_, in.nall);
+    {
+      auto h_tag = Kokkos::create_mirror_view(tag_);
+      for (int a = 0; a < in.nall; a++) h_tag(a) = static_cast<std::int64_t>(tag[a]);
+      Kokkos::deep_copy(tag_, h_tag);
+    }
+    const Candidates candidates = candidates_of(in);
+
+    // how many pairs each listed atom has, and whether one has an atom outside the group
+    resize(pair_start_, in.inum + 1);
+    auto pair_start = pair_start_;
+    int fixed = 0;
+    Kokkos::parallel_reduce(
+        "etd:pairs_count", Kokkos::RangePolicy<execution_space>(0, in.inum),
+        KOKKOS_LAMBDA(const int ii, int &any_fixed) {
+          int count = 0;
+          candidates.visit(ii, [&](int, int, int, const double *, double, double, bool held) {
+            count++;
+            if (held) any_fixed = 1;
+          });
+          pair_start(ii) = count;
+        },
+        Kokkos::Max<int>(fixed));
+    // where each atom's pairs start (exclusive scan; the last entry is the total)
+    int total = 0;
+    Kokkos::parallel_scan(
+        "etd:pairs_place", Kokkos::RangePolicy<execution_space>(0, in.inum + 1),
+        KOKKOS_LAMBDA(const int ii, int &sum, const bool final) {
+          const int count = ii < candidates.inum ? pair_start(ii) : 0;
+          if (final) pair_start(ii) = sum;
+          sum += count;
+        },
+        total);
+    npairs_ = total;
+    resize(pair_i_, total);
+    resize(pair_j_, total);
+    resize(geometry_, total);
+    resize(noise_values_, total);
+    resize(distance_, total);
+    auto pair_i = pair_i_;
+    auto pair_j = pair_j_;
+    auto geometry = geometry_;
+    auto noise_values = noise_values_;
+    auto distance = distance_;
+    const PairNoise noise = noise_;
+    auto tags = tag_;
+    const std::int64_t step = in.step;
+    Kokkos::parallel_for(
+        "etd:pairs_fill", Kokkos::RangePolicy<execution_space>(0, in.inum),
+        KOKKOS_LAMBDA(const int ii) {
+          int at = pair_start(ii);
+          candidates.visit(ii, [&](int i, int j, int partner, const double *d, double rsq,
+                                   double factor, bool) {
+            const double r = std::sqrt(rsq);
+            const double inv_r = 1.0 / r;
+            const PairDissipation dissipation =
+                pair_dissipation(candidates.coefficients(i, j), r, factor);
+            pair_i(at) = i;
+            pair_j(at) = partner;
+            for (int k = 0; k < 3; k++) geometry(at, k) = static_cast<float>(d[k] * inv_r);
+            geometry(at, 3) = static_cast<float>(dissipation.friction);
+            noise_values(at) = dissipation.noise * noise.gaussian(tags(i), tags(j), step);
+            distance(at) = r;
+            at++;
+          });
+        });
+    return fixed > 0;    // (Max starts from the lowest int, where no atom is listed)
+  }
+
+  int pairs() const { return npairs_; }
+  const Indices &pair_i() const { return pair_i_; }
+  const Indices &pair_j() const { return pair_j_; }
+  const Geometry &geometry() const { return geometry_; }
+  const Values &noise() const { return noise_values_; }    // sigma w_R theta per pair
+
+  // the pairs in host memory, as FrictionPairAssembly holds them (for the virial and the split)
+  void copy_to_host(std::vector<FrictionPair> &pairs, std::vector<double> &noise,
+                    std::vector<double> &distance) const
+  {
+    const int n = npairs_;
+    auto h_i = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pair_i_);
+    auto h_j = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pair_j_);
+    auto h_geometry = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), geometry_);
+    auto h_noise = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), noise_values_);
+    auto h_distance = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), distance_);
+    pairs.resize(n);
+    noise.resize(n);
+    distance.resize(n);
+    for (int p = 0; p < n; p++) {
+      pairs[p].i = h_i(p);
+      pairs[p].j = h_j(p);
+      for (int k = 0; k < 3; k++) pairs[p].e[k] = h_geometry(p, k);
+      pairs[p].friction = h_geometry(p, 3);
+      noise[p] = h_noise(p);
+      distance[p] = h_distance(p);
+    }
+  }
+
+  // The candidate pairs of one listed atom and the tests build() applies to them (public: a
+  // device lambda captures it)
+  struct Candidates {
+    int inum, nlocal, neighbor_mask, special_shift, groupbit, ntypes1;
+    bool newton_off;
+    double cutsq_max;
+    double special[4];
+    Indices ilist, list_start, list, type, mask, ghost_partner, present;
+    Values x;
+    Tags tag;
+    Table table;
+
+    KOKKOS_INLINE_FUNCTION const PairCoefficients &coefficients(int i, int j) const
+    {
+      return table(type(i) * ntypes1 + type(j));
+    }
+    // pair(i, j, partner, d = x_i - x_j, rsq, special factor, held: an atom outside the group)
+    // for each friction pair of listed atom ii, in the list's order (j: the atom or its ghost
+    // image, partner: the partner index it stands for)
+    template <class Pair> KOKKOS_INLINE_FUNCTION void visit(int ii, Pair pair) const
+    {
+      const int i = ilist(ii);
+      const bool i_mobile = (mask(i) & groupbit) != 0;
+      const double xi0 = x(3 * i), xi1 = x(3 * i + 1), xi2 = x(3 * i + 2);
+      for (int n = list_start(ii); n < list_start(ii + 1); n++) {
+        const int j_bits = list(n);
+        const int j = j_bits & neighbor_mask;
+        const double d[3] = {xi0 - x(3 * j), xi1 - x(3 * j + 1), xi2 - x(3 * j + 2)};
+        const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        if (!(rsq < cutsq_max)) continue;
+        const double factor = special[(j_bits >> special_shift) & 3];
+        if (factor == 0.0) continue;
+        int partner = j;
+        if (j >= nlocal) {
+          partner = ghost_partner(j - nlocal);
+          if (partner < nlocal && newton_off && tag(i) >= tag(partner)) continue;
+        }
+        const bool j_mobile = (mask(j) & groupbit) != 0;
+        if (!i_mobile && !j_mobile) continue;
+        const int k = type(i) * ntypes1 + type(j);
+        if (!present(k)) continue;
+        if (rsq >= table(k).rcsq_d || rsq == 0.0) continue;
+        pair(i, j, partner, d, rsq, factor, !i_mobile || !j_mobile);
+      }
+    }
+  };
+
+ private:
+  int ntypes1_ = 1, npairs_ = 0;
+  PairNoise noise_;
+  Values ziggurat_;
+  Table coefficients_;
+  Indices present_;
+  Indices ilist_, list_start_, list_;    // the candidates in compressed rows
+  Values x_;
+  Indices type_, mask_, ghost_partner_;
+  Tags tag_;
+  Indices pair_start_, pair_i_, pair_j_;
+  Geometry geometry_;
+  Values noise_values_, distance_;
+
+  Candidates candidates_of(const Input &in) const
+  {
+    Candidates c;
+    c.inum = in.inum;
+    c.nlocal = in.nlocal;
+    c.neighbor_mask = in.neighbor_mask;
+    c.special_shift = in.special_shift;
+    c.groupbit = in.groupbit;
+    c.ntypes1 = ntypes1_;
+    c.newton_off = in.newton_off;
+    c.cutsq_max = in.cutsq_max;
+    for (int k = 0; k < 4; k++) c.special[k] = in.special[k];
+    c.ilist = ilist_;
+    c.list_start = list_start_;
+    c.list = list_;
+    c.type = type_;
+    c.mask = mask_;
+    c.ghost_partner = ghost_partner_;
+    c.present = present_;
+    c.x = x_;
+    c.tag = tag_;
+    c.table = coefficients_;
+    return c;
+  }
+
+  // the list in compressed rows, in DeviceType's memory
+  void flatten_list(const Input &in)
+  {
+    resize(list_start_, in.inum + 1);
+    auto h_start = Kokkos::create_mirror_view(list_start_);
+    h_start(0) = 0;
+    for (int ii = 0; ii < in.inum; ii++) h_start(ii + 1) = h_start(ii) + in.numneigh[in.ilist[ii]];
+    const int entries = h_start(in.inum);
+    resize(list_, entries);
+    auto h_list = Kokkos::create_mirror_view(list_);
+    Kokkos::parallel_for(
+        "etd:pairs_flatten", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, in.inum),
+        [&](const int ii) {
+          const int *neighbors = in.firstneigh[in.ilist[ii]];
+          for (int n = h_start(ii); n < h_start(ii + 1); n++) h_list(n) = neighbors[n - h_start(ii)];
+        });
+    Kokkos::deep_copy(list_start_, h_start);
+    Kokkos::deep_copy(list_, h_list);
+    upload(ilist_, in.ilist, in.inum);
+  }
+
+  template <class View> static void resize(View &view, size_t n)
+  {
+    if (view.extent(0) < n)
+      view = View(Kokkos::view_alloc(Kokkos::WithoutInitializing, "etd:pairs"), n);
+  }
+  template <class View, typename T> static void upload(View &view, const T *host, int n)
+  {
+    resize(view, n);
+    if (n == 0) return;
+    Kokkos::View<const T *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> given(host,
+                                                                                              n);
+    Kokkos::deep_copy(Kokkos::subview(view, Kokkos::make_pair(0, n)), given);
+  }
+};
+
+}    // namespace etd
+
+#endif
