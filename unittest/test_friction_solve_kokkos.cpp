@@ -224,9 +224,11 @@ struct DevicePairs {
 
 }    // namespace
 
-// The incidence built in kernels from pairs in device memory orders each atom's sums as the host
-// one does: the same solution, bit for bit (with slots, and with an atom's pair with its own
-// periodic image, whose two ends are one atom)
+// Pairs handed over in device memory, with the incidence built on the host (where the host
+// reads that memory) and in kernels (a GPU's path: atomics, then each atom's entries sorted back
+// to pair order): each orders every atom's sums as the host set_pairs() does, so the same
+// solution, bit for bit (with slots, and with an atom's pair with its own periodic image, whose
+// two ends are one atom)
 TEST(FrictionSolveKokkos, PairsInDeviceMemoryGiveTheSameSolve)
 {
   Cluster c(true);
@@ -241,20 +243,24 @@ TEST(FrictionSolveKokkos, PairsInDeviceMemoryGiveTheSameSolve)
   const std::vector<int> mobile(c.natoms, 1);
   const auto serial_sum = [](double *, int) {};
   const etd::FrictionSolveKokkos<Device>::Exchange exchange = [&](double *v) { c.exchange(v); };
-  std::vector<double> x[2];
-  for (int device = 0; device < 2; device++) {
+  std::vector<double> x[3];
+  for (int path = 0; path < 3; path++) {
     etd::FrictionSolveKokkos<Device> kernels;
     const DevicePairs pairs(c.pairs);
-    if (device)
+    if (path == 1)
       kernels.set_pairs(pairs.i, pairs.j, pairs.geometry, int(c.pairs.size()), c.natoms,
                         c.partners());
+    else if (path == 2)
+      kernels.set_pairs_in_kernels(pairs.i, pairs.j, pairs.geometry, int(c.pairs.size()),
+                                   c.natoms, c.partners());
     else
       kernels.set_pairs(c.pairs, c.natoms, c.partners());
-    x[device].assign(n, 0.0);
+    x[path].assign(n, 0.0);
     kernels.solve(inertia.data(), mobile.data(), rhs.data(), 1.0, 0.0015, 1e-10, 500, exchange,
-                  serial_sum, x[device].data());
+                  serial_sum, x[path].data());
   }
-  for (int k = 0; k < n; k++) ASSERT_EQ(x[1][k], x[0][k]) << "unknown " << k;
+  for (int path = 1; path < 3; path++)
+    for (int k = 0; k < n; k++) ASSERT_EQ(x[path][k], x[0][k]) << "path " << path << ", unknown " << k;
 }
 
 // b = M v - h/2 G u + sqrt(h) sum_pairs (+-) noise e against the host's sums

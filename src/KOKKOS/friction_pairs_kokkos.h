@@ -88,7 +88,8 @@ template <class DeviceType> class FrictionPairsKokkos {
   // atom outside it.
   template <typename Tag> bool build(const Input &in, const Tag *tag)
   {
-    flatten_list(in);
+    if (!reads_host) flatten_list(in);
+    upload(ilist_, in.ilist, in.inum);
     upload(x_, in.x, 3 * in.nall);
     upload(type_, in.type, in.nall);
     upload(mask_, in.mask, in.nall);
@@ -191,10 +192,17 @@ template <class DeviceType> class FrictionPairsKokkos {
     }
   }
 
+  // whether DeviceType's kernels read host memory (then they read LAMMPS's list in place)
+  static constexpr bool reads_host =
+      Kokkos::SpaceAccessibility<execution_space, Kokkos::HostSpace>::accessible;
+
   // The candidate pairs of one listed atom and the tests build() applies to them (public: a
   // device lambda captures it)
   struct Candidates {
     int inum, nlocal, neighbor_mask, special_shift, groupbit, ntypes1;
+    // the list: LAMMPS's rows in place where the kernels read host memory, else compressed rows
+    const int *numneigh;
+    int *const *firstneigh;
     bool newton_off;
     double cutsq_max;
     double special[4];
@@ -215,8 +223,10 @@ template <class DeviceType> class FrictionPairsKokkos {
       const int i = ilist(ii);
       const bool i_mobile = (mask(i) & groupbit) != 0;
       const double xi0 = x(3 * i), xi1 = x(3 * i + 1), xi2 = x(3 * i + 2);
-      for (int n = list_start(ii); n < list_start(ii + 1); n++) {
-        const int j_bits = list(n);
+      const int first = reads_host ? 0 : list_start(ii);
+      const int last = reads_host ? numneigh[i] : list_start(ii + 1);
+      for (int n = first; n < last; n++) {
+        const int j_bits = reads_host ? firstneigh[i][n] : list(n);
         const int j = j_bits & neighbor_mask;
         const double d[3] = {xi0 - x(3 * j), xi1 - x(3 * j + 1), xi2 - x(3 * j + 2)};
         const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
@@ -259,6 +269,8 @@ template <class DeviceType> class FrictionPairsKokkos {
     c.nlocal = in.nlocal;
     c.neighbor_mask = in.neighbor_mask;
     c.special_shift = in.special_shift;
+    c.numneigh = in.numneigh;
+    c.firstneigh = in.firstneigh;
     c.groupbit = in.groupbit;
     c.ntypes1 = ntypes1_;
     c.newton_off = in.newton_off;
@@ -277,7 +289,7 @@ template <class DeviceType> class FrictionPairsKokkos {
     return c;
   }
 
-  // the list in compressed rows, in DeviceType's memory
+  // the list in compressed rows, in DeviceType's memory (where its kernels cannot read LAMMPS's)
   void flatten_list(const Input &in)
   {
     resize(list_start_, in.inum + 1);
@@ -295,7 +307,6 @@ template <class DeviceType> class FrictionPairsKokkos {
         });
     Kokkos::deep_copy(list_start_, h_start);
     Kokkos::deep_copy(list_, h_list);
-    upload(ilist_, in.ilist, in.inum);
   }
 
   template <class View> static void resize(View &view, size_t n)
