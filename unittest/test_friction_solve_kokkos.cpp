@@ -260,7 +260,8 @@ TEST(FrictionSolveKokkos, PairsInDeviceMemoryGiveTheSameSolve)
                   serial_sum, x[path].data());
   }
   for (int path = 1; path < 3; path++)
-    for (int k = 0; k < n; k++) ASSERT_EQ(x[path][k], x[0][k]) << "path " << path << ", unknown " << k;
+    for (int k = 0; k < n; k++)
+      ASSERT_EQ(x[path][k], x[0][k]) << "path " << path << ", unknown " << k;
 }
 
 // b = M v - h/2 G u + sqrt(h) sum_pairs (+-) noise e against the host's sums
@@ -345,66 +346,71 @@ TEST(FrictionPairsKokkos, AssemblesThePairsTheHostRulesGive)
   const etd::PairNoise noise(77, etd::NoiseStream::Integrator);
   const std::int64_t step = 12;
 
-  etd::FrictionPairsKokkos<Device> kernels;
-  kernels.set_coefficients(table, 3, noise);
-  etd::FrictionPairsKokkos<Device>::Input in;
-  in.nlocal = nlocal;
-  in.nall = nall;
-  in.inum = nlocal;
-  in.ilist = ilist.data();
-  in.numneigh = numneigh.data();
-  in.firstneigh = firstneigh.data();
-  in.neighbor_mask = mask_bits;
-  in.special_shift = sb;
-  in.special = special;
-  in.x = x.data();
-  in.type = type.data();
-  in.mask = mask.data();
-  in.ghost_partner = ghost_partner.data();
-  in.groupbit = 1;
-  in.newton_off = true;
-  in.step = step;
-  in.cutsq_max = 0.81;
-  const bool fixed = kernels.build(in, tag.data());
-  std::vector<etd::FrictionPair> pairs;
-  std::vector<double> pair_noise, distance;
-  kernels.copy_to_host(pairs, pair_noise, distance);
+  for (const bool copy_list : {false, true}) {
+    SCOPED_TRACE(copy_list ? "the list copied into compressed rows (a GPU's path)"
+                           : "the list read in place");
+    etd::FrictionPairsKokkos<Device> kernels;
+    kernels.copy_the_list(copy_list);
+    kernels.set_coefficients(table, 3, noise);
+    etd::FrictionPairsKokkos<Device>::Input in;
+    in.nlocal = nlocal;
+    in.nall = nall;
+    in.inum = nlocal;
+    in.ilist = ilist.data();
+    in.numneigh = numneigh.data();
+    in.firstneigh = firstneigh.data();
+    in.neighbor_mask = mask_bits;
+    in.special_shift = sb;
+    in.special = special;
+    in.x = x.data();
+    in.type = type.data();
+    in.mask = mask.data();
+    in.ghost_partner = ghost_partner.data();
+    in.groupbit = 1;
+    in.newton_off = true;
+    in.step = step;
+    in.cutsq_max = 0.81;
+    const bool fixed = kernels.build(in, tag.data());
+    std::vector<etd::FrictionPair> pairs;
+    std::vector<double> pair_noise, distance;
+    kernels.copy_to_host(pairs, pair_noise, distance);
 
-  // the rules
-  size_t p = 0;
-  int special_pairs = 0, image_pairs = 0, slot_pairs = 0;
-  bool expect_fixed = false;
-  for (int i = 0; i < nlocal; i++)
-    for (const int j_bits : neighbors[i]) {
-      const int j = j_bits & mask_bits;
-      const double factor = special[(j_bits >> sb) & 3];
-      const double d[3] = {x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1],
-                           x[3 * i + 2] - x[3 * j + 2]};
-      const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-      const int partner = j < nlocal ? j : ghost_partner[j - nlocal];
-      if (rsq >= 0.81 || factor == 0.0 || (!mask[i] && !mask[j]) || type[i] != type[j]) continue;
-      if (j >= nlocal && partner < nlocal && tag[i] >= tag[partner]) continue;
-      ASSERT_LT(p, pairs.size());
-      const double r = std::sqrt(rsq);
-      const etd::PairDissipation w = etd::pair_dissipation(same, r, factor);
-      EXPECT_EQ(pairs[p].i, i);
-      EXPECT_EQ(pairs[p].j, partner);
-      for (int k = 0; k < 3; k++) EXPECT_EQ(pairs[p].e[k], float(d[k] * (1.0 / r)));
-      EXPECT_EQ(pairs[p].friction, float(w.friction));
-      EXPECT_EQ(pair_noise[p], w.noise * noise.gaussian(tag[i], tag[j], step));
-      EXPECT_EQ(distance[p], r);
-      expect_fixed = expect_fixed || !mask[i] || !mask[j];
-      special_pairs += factor == 0.5;
-      image_pairs += j >= nlocal && partner < nlocal;
-      slot_pairs += partner >= nlocal;
-      p++;
-    }
-  EXPECT_EQ(p, pairs.size());
-  EXPECT_EQ(fixed, expect_fixed);
-  EXPECT_TRUE(expect_fixed);
-  // (the configuration has each kind of pair the rules treat apart)
-  EXPECT_GT(pairs.size(), 50u);
-  EXPECT_EQ(special_pairs, 1);
-  EXPECT_GT(image_pairs, 0);
-  EXPECT_GT(slot_pairs, 0);
+    // the rules
+    size_t p = 0;
+    int special_pairs = 0, image_pairs = 0, slot_pairs = 0;
+    bool expect_fixed = false;
+    for (int i = 0; i < nlocal; i++)
+      for (const int j_bits : neighbors[i]) {
+        const int j = j_bits & mask_bits;
+        const double factor = special[(j_bits >> sb) & 3];
+        const double d[3] = {x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1],
+                             x[3 * i + 2] - x[3 * j + 2]};
+        const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        const int partner = j < nlocal ? j : ghost_partner[j - nlocal];
+        if (rsq >= 0.81 || factor == 0.0 || (!mask[i] && !mask[j]) || type[i] != type[j]) continue;
+        if (j >= nlocal && partner < nlocal && tag[i] >= tag[partner]) continue;
+        ASSERT_LT(p, pairs.size());
+        const double r = std::sqrt(rsq);
+        const etd::PairDissipation w = etd::pair_dissipation(same, r, factor);
+        EXPECT_EQ(pairs[p].i, i);
+        EXPECT_EQ(pairs[p].j, partner);
+        for (int k = 0; k < 3; k++) EXPECT_EQ(pairs[p].e[k], float(d[k] * (1.0 / r)));
+        EXPECT_EQ(pairs[p].friction, float(w.friction));
+        EXPECT_EQ(pair_noise[p], w.noise * noise.gaussian(tag[i], tag[j], step));
+        EXPECT_EQ(distance[p], r);
+        expect_fixed = expect_fixed || !mask[i] || !mask[j];
+        special_pairs += factor == 0.5;
+        image_pairs += j >= nlocal && partner < nlocal;
+        slot_pairs += partner >= nlocal;
+        p++;
+      }
+    EXPECT_EQ(p, pairs.size());
+    EXPECT_EQ(fixed, expect_fixed);
+    EXPECT_TRUE(expect_fixed);
+    // (the configuration has each kind of pair the rules treat apart)
+    EXPECT_GT(pairs.size(), 50u);
+    EXPECT_EQ(special_pairs, 1);
+    EXPECT_GT(image_pairs, 0);
+    EXPECT_GT(slot_pairs, 0);
+  }
 }

@@ -88,7 +88,7 @@ template <class DeviceType> class FrictionPairsKokkos {
   // atom outside it.
   template <typename Tag> bool build(const Input &in, const Tag *tag)
   {
-    if (!reads_host) flatten_list(in);
+    if (!list_in_place_) flatten_list(in);
     upload(ilist_, in.ilist, in.inum);
     upload(x_, in.x, 3 * in.nall);
     upload(type_, in.type, in.nall);
@@ -192,15 +192,18 @@ template <class DeviceType> class FrictionPairsKokkos {
     }
   }
 
-  // whether DeviceType's kernels read host memory (then they read LAMMPS's list in place)
+  // whether DeviceType's kernels read host memory: then they read LAMMPS's list in place
   static constexpr bool reads_host =
       Kokkos::SpaceAccessibility<execution_space, Kokkos::HostSpace>::accessible;
+  // (a test takes a GPU's path on the host: the list copied into compressed rows)
+  void copy_the_list(bool copy) { list_in_place_ = reads_host && !copy; }
 
   // The candidate pairs of one listed atom and the tests build() applies to them (public: a
   // device lambda captures it)
   struct Candidates {
     int inum, nlocal, neighbor_mask, special_shift, groupbit, ntypes1;
     // the list: LAMMPS's rows in place where the kernels read host memory, else compressed rows
+    bool in_place;
     const int *numneigh;
     int *const *firstneigh;
     bool newton_off;
@@ -223,10 +226,10 @@ template <class DeviceType> class FrictionPairsKokkos {
       const int i = ilist(ii);
       const bool i_mobile = (mask(i) & groupbit) != 0;
       const double xi0 = x(3 * i), xi1 = x(3 * i + 1), xi2 = x(3 * i + 2);
-      const int first = reads_host ? 0 : list_start(ii);
-      const int last = reads_host ? numneigh[i] : list_start(ii + 1);
+      const int first = in_place ? 0 : list_start(ii);
+      const int last = in_place ? numneigh[i] : list_start(ii + 1);
       for (int n = first; n < last; n++) {
-        const int j_bits = reads_host ? firstneigh[i][n] : list(n);
+        const int j_bits = in_place ? firstneigh[i][n] : list(n);
         const int j = j_bits & neighbor_mask;
         const double d[3] = {xi0 - x(3 * j), xi1 - x(3 * j + 1), xi2 - x(3 * j + 2)};
         const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
@@ -250,6 +253,7 @@ template <class DeviceType> class FrictionPairsKokkos {
 
  private:
   int ntypes1_ = 1, npairs_ = 0;
+  bool list_in_place_ = reads_host;
   PairNoise noise_;
   Values ziggurat_;
   Table coefficients_;
@@ -269,6 +273,7 @@ template <class DeviceType> class FrictionPairsKokkos {
     c.nlocal = in.nlocal;
     c.neighbor_mask = in.neighbor_mask;
     c.special_shift = in.special_shift;
+    c.in_place = list_in_place_;
     c.numneigh = in.numneigh;
     c.firstneigh = in.firstneigh;
     c.groupbit = in.groupbit;
@@ -303,7 +308,8 @@ template <class DeviceType> class FrictionPairsKokkos {
         "etd:pairs_flatten", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, in.inum),
         [&](const int ii) {
           const int *neighbors = in.firstneigh[in.ilist[ii]];
-          for (int n = h_start(ii); n < h_start(ii + 1); n++) h_list(n) = neighbors[n - h_start(ii)];
+          for (int n = h_start(ii); n < h_start(ii + 1); n++)
+            h_list(n) = neighbors[n - h_start(ii)];
         });
     Kokkos::deep_copy(list_start_, h_start);
     Kokkos::deep_copy(list_, h_list);
