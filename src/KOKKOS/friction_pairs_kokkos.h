@@ -11,7 +11,7 @@
 #include "dpd_kernel.h"
 #include "dpd_random.h"
 #include "friction_operator.h"
-#include "normal_ziggurat.h"
+#include "kokkos_views.h"
 
 #include <Kokkos_Core.hpp>
 
@@ -24,9 +24,9 @@ namespace etd {
 template <class DeviceType> class FrictionPairsKokkos {
  public:
   using execution_space = typename DeviceType::execution_space;
-  using Indices = Kokkos::View<int *, DeviceType>;
-  using Values = Kokkos::View<double *, DeviceType>;
-  using Geometry = Kokkos::View<float *[4], Kokkos::LayoutRight, DeviceType>;
+  using Indices = kk::Indices<DeviceType>;
+  using Values = kk::Values<DeviceType>;
+  using Geometry = kk::Geometry<DeviceType>;
   using Tags = Kokkos::View<std::int64_t *, DeviceType>;
   using Table = Kokkos::View<PairCoefficients *, DeviceType>;
 
@@ -64,24 +64,7 @@ template <class DeviceType> class FrictionPairsKokkos {
     Kokkos::deep_copy(coefficients_, h_coefficients);
     Kokkos::deep_copy(present_, h_present);
     noise_ = noise;
-    if constexpr (!Kokkos::SpaceAccessibility<execution_space, Kokkos::HostSpace>::accessible) {
-      using Tables = ZigguratTables;
-      const Tables host = Tables::host();
-      constexpr int N = Tables::NORMAL_SIZE, E = Tables::EXPONENTIAL_SIZE;
-      Kokkos::View<double *, Kokkos::HostSpace> staged("etd:ziggurat (host)", 2 * N + 2 * E);
-      for (int k = 0; k < N; k++) {
-        staged(k) = host.normal_x[k];
-        staged(N + k) = host.normal_y[k];
-      }
-      for (int k = 0; k < E; k++) {
-        staged(2 * N + k) = host.exponential_x[k];
-        staged(2 * N + E + k) = host.exponential_y[k];
-      }
-      ziggurat_ = Values("etd:ziggurat", 2 * N + 2 * E);
-      Kokkos::deep_copy(ziggurat_, staged);
-      const double *d = ziggurat_.data();
-      noise_.use_tables({d, d + N, d + 2 * N, d + 2 * N + E});
-    }
+    if constexpr (!reads_host) noise_ = kk::noise_with_device_tables(noise, ziggurat_);
   }
 
   // This step's pairs; tag: the atom IDs (nall). Returns whether a pair couples the group to an
@@ -89,12 +72,12 @@ template <class DeviceType> class FrictionPairsKokkos {
   template <typename Tag> bool build(const Input &in, const Tag *tag)
   {
     if (!list_in_place_) flatten_list(in);
-    upload(ilist_, in.ilist, in.inum);
-    upload(x_, in.x, 3 * in.nall);
-    upload(type_, in.type, in.nall);
-    upload(mask_, in.mask, in.nall);
-    upload(ghost_partner_, in.ghost_partner, in.nall - in.nlocal);
-    resize(tag_, in.nall);
+    kk::upload(ilist_, in.ilist, in.inum);
+    kk::upload(x_, in.x, 3 * in.nall);
+    kk::upload(type_, in.type, in.nall);
+    kk::upload(mask_, in.mask, in.nall);
+    kk::upload(ghost_partner_, in.ghost_partner, in.nall - in.nlocal);
+    kk::grow(tag_, in.nall);
     {
       auto h_tag = Kokkos::create_mirror_view(tag_);
       for (int a = 0; a < in.nall; a++) h_tag(a) = static_cast<std::int64_t>(tag[a]);
@@ -103,7 +86,7 @@ template <class DeviceType> class FrictionPairsKokkos {
     const Candidates candidates = candidates_of(in);
 
     // how many pairs each listed atom has, and whether one has an atom outside the group
-    resize(pair_start_, in.inum + 1);
+    kk::grow(pair_start_, in.inum + 1);
     auto pair_start = pair_start_;
     int fixed = 0;
     Kokkos::parallel_reduce(
@@ -128,11 +111,11 @@ template <class DeviceType> class FrictionPairsKokkos {
         },
         total);
     npairs_ = total;
-    resize(pair_i_, total);
-    resize(pair_j_, total);
-    resize(geometry_, total);
-    resize(noise_values_, total);
-    resize(distance_, total);
+    kk::grow(pair_i_, total);
+    kk::grow(pair_j_, total);
+    kk::grow(geometry_, total);
+    kk::grow(noise_values_, total);
+    kk::grow(distance_, total);
     auto pair_i = pair_i_;
     auto pair_j = pair_j_;
     auto geometry = geometry_;
@@ -297,12 +280,12 @@ template <class DeviceType> class FrictionPairsKokkos {
   // the list in compressed rows, in DeviceType's memory (where its kernels cannot read LAMMPS's)
   void flatten_list(const Input &in)
   {
-    resize(list_start_, in.inum + 1);
+    kk::grow(list_start_, in.inum + 1);
     auto h_start = Kokkos::create_mirror_view(list_start_);
     h_start(0) = 0;
     for (int ii = 0; ii < in.inum; ii++) h_start(ii + 1) = h_start(ii) + in.numneigh[in.ilist[ii]];
     const int entries = h_start(in.inum);
-    resize(list_, entries);
+    kk::grow(list_, entries);
     auto h_list = Kokkos::create_mirror_view(list_);
     Kokkos::parallel_for(
         "etd:pairs_flatten", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, in.inum),
@@ -315,19 +298,6 @@ template <class DeviceType> class FrictionPairsKokkos {
     Kokkos::deep_copy(list_, h_list);
   }
 
-  template <class View> static void resize(View &view, size_t n)
-  {
-    if (view.extent(0) < n)
-      view = View(Kokkos::view_alloc(Kokkos::WithoutInitializing, "etd:pairs"), n);
-  }
-  template <class View, typename T> static void upload(View &view, const T *host, int n)
-  {
-    resize(view, n);
-    if (n == 0) return;
-    Kokkos::View<const T *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> given(host,
-                                                                                              n);
-    Kokkos::deep_copy(Kokkos::subview(view, Kokkos::make_pair(0, n)), given);
-  }
 };
 
 }    // namespace etd

@@ -13,6 +13,7 @@
 
 #include "friction_operator.h"
 #include "friction_solve.h"
+#include "kokkos_views.h"
 
 #include <Kokkos_Core.hpp>
 
@@ -24,9 +25,9 @@ namespace etd {
 template <class DeviceType> class FrictionSolveKokkos {
  public:
   using execution_space = typename DeviceType::execution_space;
-  using Values = Kokkos::View<double *, DeviceType>;
-  using Indices = Kokkos::View<int *, DeviceType>;
-  using Geometry = Kokkos::View<float *[4], Kokkos::LayoutRight, DeviceType>;
+  using Values = kk::Values<DeviceType>;
+  using Indices = kk::Indices<DeviceType>;
+  using Geometry = kk::Geometry<DeviceType>;
   // fills the slots [3 nowned, 3 npartners) of a host array of partner values from their owners
   using Exchange = std::function<void(double *)>;
   // sums count values (at most 9) over the ranks, in place
@@ -39,7 +40,7 @@ template <class DeviceType> class FrictionSolveKokkos {
     nowned_ = nowned;
     npartners_ = npartners;
     const int npairs = static_cast<int>(pairs.size());
-    resize(geometry_, npairs);
+    kk::grow(geometry_, npairs);
     auto h_geometry = Kokkos::create_mirror_view(geometry_);
     pair_i_.resize(npairs);
     pair_j_.resize(npairs);
@@ -58,7 +59,7 @@ template <class DeviceType> class FrictionSolveKokkos {
   // pair order (the pair, the atom at its other end, and which end the atom is)
   void incidence_on_host(const int *pair_i, const int *pair_j, int npairs, int nowned)
   {
-    resize(offsets_, nowned + 1);
+    kk::grow(offsets_, nowned + 1);
     auto h_offsets = Kokkos::create_mirror_view(offsets_);
     for (int a = 0; a <= nowned; a++) h_offsets(a) = 0;
     for (int p = 0; p < npairs; p++) {
@@ -67,9 +68,9 @@ template <class DeviceType> class FrictionSolveKokkos {
     }
     for (int a = 0; a < nowned; a++) h_offsets(a + 1) += h_offsets(a);
     const int entries = h_offsets(nowned);
-    resize(incidence_, entries);
-    resize(other_, entries);
-    resize(end_, entries);
+    kk::grow(incidence_, entries);
+    kk::grow(other_, entries);
+    kk::grow(end_, entries);
     auto h_incidence = Kokkos::create_mirror_view(incidence_);
     auto h_other = Kokkos::create_mirror_view(other_);
     auto h_end = Kokkos::create_mirror_view(end_);
@@ -118,7 +119,7 @@ template <class DeviceType> class FrictionSolveKokkos {
     nowned_ = nowned;
     npartners_ = npartners;
     geometry_ = geometry;
-    resize(offsets_, nowned + 1);
+    kk::grow(offsets_, nowned + 1);
     Kokkos::deep_copy(offsets_, 0);
     auto offsets = offsets_;
     Kokkos::parallel_for(
@@ -135,10 +136,10 @@ template <class DeviceType> class FrictionSolveKokkos {
           if (final) offsets(a) = sum;
         },
         entries);
-    resize(incidence_, entries);
-    resize(other_, entries);
-    resize(end_, entries);
-    resize(cursor_, nowned);
+    kk::grow(incidence_, entries);
+    kk::grow(other_, entries);
+    kk::grow(end_, entries);
+    kk::grow(cursor_, nowned);
     auto cursor = cursor_;
     Kokkos::parallel_for(
         "etd:incidence_cursor", Kokkos::RangePolicy<execution_space>(0, nowned),
@@ -191,10 +192,10 @@ template <class DeviceType> class FrictionSolveKokkos {
                 double h, double *b, double *gu)
   {
     const int n = 3 * nowned_;
-    upload(inertia_, inertia, n);
-    upload(b_, v, n);    // b_ holds v until it is overwritten with b
-    upload(x_, u, 3 * npartners_);
-    resize(w_, n);
+    kk::upload(inertia_, inertia, n);
+    kk::upload(b_, v, n);    // b_ holds v until it is overwritten with b
+    kk::upload(x_, u, 3 * npartners_);
+    kk::grow(w_, n);
     auto offsets = offsets_;
     auto incidence = incidence_;
     auto other = other_;
@@ -223,8 +224,8 @@ template <class DeviceType> class FrictionSolveKokkos {
             rhs(d) = inertia_view(d) * rhs(d) - half_h * g[k] + impulse[k];
           }
         });
-    download(b_, b, n);
-    if (gu) download(w_, gu, n);
+    kk::download(b_, b, n);
+    if (gu) kk::download(w_, gu, n);
   }
 
   // Solves over the 3 nowned unknowns; atoms with mobile[a] = 0, or with neither mass nor
@@ -241,18 +242,13 @@ template <class DeviceType> class FrictionSolveKokkos {
     mass_weight_ = mass_weight;
     friction_weight_ = friction_weight;
     exchange_ = &exchange;
-    upload(inertia_, inertia, n);
-    upload(b_, b, n);
-    resize(mobile_, nowned_);
-    {
-      Kokkos::View<const int *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> given(
-          mobile, nowned_);
-      Kokkos::deep_copy(Kokkos::subview(mobile_, Kokkos::make_pair(0, nowned_)), given);
-    }
-    for (Values *v : {&r_, &p_, &w_, &s_}) resize(*v, n);
-    for (Values *v : {&z_, &x_}) resize(*v, 3 * npartners_);
-    resize(inverse_, 9 * nowned_);
-    resize(held_, n);
+    kk::upload(inertia_, inertia, n);
+    kk::upload(b_, b, n);
+    kk::upload(mobile_, mobile, nowned_);
+    for (Values *v : {&r_, &p_, &w_, &s_}) kk::grow(*v, n);
+    for (Values *v : {&z_, &x_}) kk::grow(*v, 3 * npartners_);
+    kk::grow(inverse_, 9 * nowned_);
+    kk::grow(held_, n);
     Kokkos::deep_copy(p_, 0.0);
     Kokkos::deep_copy(s_, 0.0);
     Kokkos::deep_copy(z_, 0.0);
@@ -278,7 +274,7 @@ template <class DeviceType> class FrictionSolveKokkos {
       } ops{*this, global_sum};
       result = cg_detail::iterate(ops, global_sum, sums, tolerance, max_iterations);
     }
-    download(x_, x, n);
+    kk::download(x_, x, n);
     return result;
   }
 
@@ -326,7 +322,7 @@ template <class DeviceType> class FrictionSolveKokkos {
     auto inverse = inverse_;
     auto held = held_;
     if (start) {
-      upload(w_, start, n);    // w_ as scratch
+      kk::upload(w_, start, n);    // w_ as scratch
       auto given = w_;
       Kokkos::parallel_for(
           "etd:start", Kokkos::RangePolicy<execution_space>(0, n),
@@ -344,7 +340,7 @@ template <class DeviceType> class FrictionSolveKokkos {
     auto mobile = mobile_;
     const double mass_weight = mass_weight_, friction_weight = friction_weight_;
     if (start && start_friction) {
-      upload(s_, start_friction, n);    // s_ as scratch, zeroed below
+      kk::upload(s_, start_friction, n);    // s_ as scratch, zeroed below
       auto gx = s_;
       auto given = w_;
       Kokkos::parallel_for(
@@ -507,21 +503,6 @@ template <class DeviceType> class FrictionSolveKokkos {
   Values inertia_, b_, inverse_, held_;    // held_: 1 on unknowns held at their start
   Values r_, z_, p_, w_, s_, x_;           // z_ and x_ over the partners: G acts on them
 
-  template <class View> static void resize(View &view, size_t n)
-  {
-    if (view.extent(0) < n) view = View(Kokkos::view_alloc(Kokkos::WithoutInitializing, "etd:solve"), n);
-  }
-  static void upload(Values &view, const double *host, int n)
-  {
-    resize(view, n);
-    Kokkos::View<const double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> given(host, n);
-    Kokkos::deep_copy(Kokkos::subview(view, Kokkos::make_pair(0, n)), given);
-  }
-  static void download(const Values &view, double *host, int n)
-  {
-    Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> out(host, n);
-    Kokkos::deep_copy(out, Kokkos::subview(view, Kokkos::make_pair(0, n)));
-  }
 
   // a partner vector's slots from their owners (through the host); every rank calls it, with
   // slots or without, since the exchange is collective

@@ -5,6 +5,8 @@
 
 #include "pair_dpd_law_kokkos.h"
 
+#include "kokkos_views.h"
+
 #include "atom_kokkos.h"
 #include "atom_masks.h"
 #include "comm.h"
@@ -78,24 +80,8 @@ template <class DeviceType, class Style>
 void PairDPDLawKokkos<DeviceType, Style>::copy_ziggurat_tables()
 {
   noise_kk = this->noise;
-  if constexpr (!reads_host_memory) {
-    using Tables = etd::ZigguratTables;
-    const Tables host = Tables::host();
-    constexpr int N = Tables::NORMAL_SIZE, E = Tables::EXPONENTIAL_SIZE;
-    Kokkos::View<double *, Kokkos::HostSpace> staged("ziggurat tables (host)", 2 * N + 2 * E);
-    for (int k = 0; k < N; k++) {
-      staged(k) = host.normal_x[k];
-      staged(N + k) = host.normal_y[k];
-    }
-    for (int k = 0; k < E; k++) {
-      staged(2 * N + k) = host.exponential_x[k];
-      staged(2 * N + E + k) = host.exponential_y[k];
-    }
-    d_ziggurat_tables = Kokkos::View<double *, DeviceType>("ziggurat tables", 2 * N + 2 * E);
-    Kokkos::deep_copy(d_ziggurat_tables, staged);
-    const double *d = d_ziggurat_tables.data();
-    noise_kk.use_tables({d, d + N, d + 2 * N, d + 2 * N + E});
-  }
+  if constexpr (!reads_host_memory)
+    noise_kk = etd::kk::noise_with_device_tables(this->noise, d_ziggurat_tables);
 }
 
 // A host neighbor list and host arrays for this run: LAMMPS syncs all of an atom's data to the
