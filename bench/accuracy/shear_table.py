@@ -2,7 +2,11 @@
 """The viscosity column's table from viscosity_shear.sh's logs: for each set of runs (the log
 name's prefix: fluid, mass, rate, time) and each cell, eta = -<P_xy> / rate as the mean over
 seeds with its standard error, kBT likewise, and the deviation from the set's reference (cell
-"ref") with the error of the ratio (accuracy_matrix.relative_deviation, as in the matrix).
+"ref") with the error of the ratio (accuracy_matrix.relative_deviation, as in the matrix). The
+last two columns are the mean flow profile: the slope of v_x on y (least squares over all atoms,
+every step) against the imposed rate, and against the same slope of the atoms' displacements per
+step over the seeds whose RESULT line has it (sdisp). The second is what a bias of the
+velocities in v would move; the first also holds the flow's own deviation from the rate.
 
 A set without a reference of its own (HS at m = 0.01 and 0.001, where velocity-Verlet is out of
 reach) is compared with another set's: --ref-from SET=REFSET (repeatable).
@@ -28,7 +32,8 @@ from etddpd.accuracy_matrix import mean_and_error, relative_deviation  # noqa: E
 LOG = re.compile(r"^log\.(?P<prefix>(?:[A-Za-z0-9.]+\.)?)(?P<cell>(?:ref|stock|impv?|diag)[0-9.]*?)\.(?P<seed>[0-9]+)$")
 RESULT = re.compile(r"^RESULT .* kT (?P<kT>[-0-9.eE+]+) eta (?P<eta>[-0-9.eE+]+)")
 RESULT_FIELDS = re.compile(r"^RESULT integ (?P<integ>\S+) dt (?P<dt>\S+) rate (?P<rate>\S+) .*"
-                           r"kT (?P<kT>\S+) eta (?P<eta>\S+) slope (?P<slope>\S+)(?: eta_v (?P<eta_v>\S+))?")
+                           r"kT (?P<kT>\S+) eta (?P<eta>\S+) slope (?P<slope>\S+)(?: sdisp (?P<sdisp>\S+))?"
+                           r"(?: eta_v (?P<eta_v>\S+))?")
 
 
 def log_records(directory):
@@ -50,6 +55,8 @@ def log_records(directory):
                           slope=float(fields["slope"]))
             if fields["eta_v"]:
                 record["eta_v"] = float(fields["eta_v"])
+            if fields["sdisp"]:
+                record["sdisp"] = float(fields["sdisp"])
         last = RESULT.match(lines[-1])
         record.update(kT=float(last["kT"]), eta=float(last["eta"]))
         records.append(record)
@@ -78,23 +85,29 @@ def merge_summary(path, records):
 
 
 def runs_from_records(records):
-    """{prefix: {cell: [(seed, eta, kT, eta_v or None), ...]}} from summary records."""
+    """{prefix: {cell: [(seed, eta, kT, eta_v or None, slope / rate or None,
+    (slope - sdisp) / rate or None), ...]}} from summary records."""
     runs = {}
     for r in sorted(records, key=lambda r: (r["set"], r["cell"], r["seed"])):
+        slope = r["slope"] / r["rate"] if r.get("slope") is not None and r.get("rate") else None
+        lag = (r["slope"] - r["sdisp"]) / r["rate"] if slope is not None and r.get("sdisp") is not None else None
         runs.setdefault(r["set"], {}).setdefault(r["cell"], []).append(
-            (r["seed"], r["eta"], r["kT"], r.get("eta_v")))
+            (r["seed"], r["eta"], r["kT"], r.get("eta_v"), slope, lag))
     return runs
 
 
 def read_runs(directory):
-    """{prefix: {cell: [(seed, eta, kT, eta_v), ...]}} from the logs that finished (a RESULT line)."""
+    """{prefix: {cell: [(seed, eta, kT, eta_v, slope / rate, (slope - sdisp) / rate), ...]}} from
+    the logs that finished (a RESULT line)."""
     return runs_from_records(log_records(directory))
 
 
 def table(cells, reference=None):
-    """Rows (cell, n, eta, eta error, kT, deviation % from ref, its error %, and the same
-    deviation of eta_v where every seed of the cell has one), ref first. The reference is the
-    set's cell "ref", or the runs `reference` [(seed, eta, kT, eta_v), ...] given."""
+    """Rows (cell, n, eta, eta error, kT, deviation % from ref, its error %, the same deviation
+    of eta_v where every seed of the cell has one, (deviation %, error %) of the profile's slope
+    from the rate where every seed has one, and (deviation %, error %, seeds) of that slope from
+    the displacements' over the seeds that have both), ref first. The reference is the set's
+    cell "ref", or the runs `reference` [(seed, eta, kT, eta_v, slope / rate, lag), ...] given."""
     rows = []
     ref_etas = [r[1] for r in (cells.get("ref", []) if reference is None else reference)]
     for cell in sorted(cells, key=lambda c: (c != "ref", c)):
@@ -110,7 +123,17 @@ def table(cells, reference=None):
         if ref_etas and cell != "ref" and all(e is not None for e in ends):
             against = relative_deviation(ends, ref_etas)
             end = (100.0 * against.value, 100.0 * against.error)
-        rows.append((cell, len(etas), eta, error, kT, deviation, deviation_error, end))
+        slopes = [r[4] for r in cells[cell]]
+        profile = None
+        if all(s is not None for s in slopes):
+            slope, slope_error = mean_and_error(slopes)
+            profile = (100.0 * (slope - 1.0), 100.0 * slope_error)
+        lags = [r[5] for r in cells[cell] if r[5] is not None]
+        lag = None
+        if lags:
+            lag_mean, lag_error = mean_and_error(lags)
+            lag = (100.0 * lag_mean, 100.0 * lag_error, len(lags))
+        rows.append((cell, len(etas), eta, error, kT, deviation, deviation_error, end, profile, lag))
     return rows
 
 
@@ -141,12 +164,15 @@ def main(argv):
     for prefix in (argv or sorted(runs)):
         source = ref_from.get(prefix)
         print(f"\n## {prefix or '(GW m = 0.01, rate 2)'}" + (f" (against the reference of {source})" if source else "") + "\n")
-        print("| cell | integrator | dt | seeds | eta | kBT | against the reference | eta from m v v of v, against it |")
-        print("|---|---|---|---|---|---|---|---|")
+        print("| cell | integrator | dt | seeds | eta | kBT | against the reference | eta from m v v of v, against it "
+              "| profile slope of v, against the rate | against the displacements' (seeds) |")
+        print("|---|---|---|---|---|---|---|---|---|---|")
         reference = runs[source]["ref"] if source else None
-        for cell, n, eta, error, kT, deviation, deviation_error, end in table(runs.get(prefix, {}), reference):
+        for cell, n, eta, error, kT, deviation, deviation_error, end, profile, lag in table(runs.get(prefix, {}), reference):
             against = "" if deviation is None else f"{deviation:+.1f} +- {deviation_error:.1f} %"
             against += " | " + ("" if end is None else f"{end[0]:+.1f} +- {end[1]:.1f} %")
+            against += " | " + ("" if profile is None else f"{profile[0]:+.1f} +- {profile[1]:.1f} %")
+            against += " | " + ("" if lag is None else f"{lag[0]:+.2f} +- {lag[1]:.2f} % ({lag[2]})")
             integ, dt = steps.get((prefix, cell), ("", ""))
             print(f"| {cell} | {integ} | {dt:g} | {n} | {eta:.4g} +- {error:.2g} | {kT:.3f} | {against} |"
                   if dt != "" else f"| {cell} | {integ} | | {n} | {eta:.4g} +- {error:.2g} | {kT:.3f} | {against} |")

@@ -15,12 +15,12 @@ shear_table = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(shear_table)
 
 
-def write_log(directory, name, eta, kT=1.0, eta_v=None):
+def write_log(directory, name, eta, kT=1.0, eta_v=None, slope=0.5, sdisp=None):
     with open(os.path.join(directory, name), "w") as log:
         log.write("LAMMPS (29 Sep 2021)\n")
         if eta is not None:
-            tail = "" if eta_v is None else f" eta_v {eta_v}"
-            log.write(f"RESULT integ stock dt 0.001 rate 0.5 plane xy seed 1 kT {kT} eta {eta} slope 0.5{tail}\n")
+            tail = ("" if sdisp is None else f" sdisp {sdisp}") + ("" if eta_v is None else f" eta_v {eta_v}")
+            log.write(f"RESULT integ stock dt 0.001 rate 0.5 plane xy seed 1 kT {kT} eta {eta} slope {slope}{tail}\n")
 
 
 class ShearTable(unittest.TestCase):
@@ -29,7 +29,8 @@ class ShearTable(unittest.TestCase):
             for seed, eta in ((1, 1.0), (2, 1.2)):
                 write_log(directory, f"log.HS.m1.rate0.2.ref.{seed}", eta)
             for seed, eta in ((1, 0.9), (2, 1.0)):
-                write_log(directory, f"log.HS.m1.rate0.2.imp0.04.{seed}", eta, kT=0.98, eta_v=eta + 0.2)
+                write_log(directory, f"log.HS.m1.rate0.2.imp0.04.{seed}", eta, kT=0.98, eta_v=eta + 0.2,
+                          slope=0.5 + 0.01 * seed, sdisp=0.5 + 0.01 * seed - 0.001 * seed)
             write_log(directory, "log.HS.m1.rate0.2.stock.1", None)    # still running
             write_log(directory, "log.HS.m1.rate0.2.stock0.003.1", 1.05)
             write_log(directory, "log.ref.1", 0.16)                    # the GW m = 0.01 set
@@ -37,7 +38,7 @@ class ShearTable(unittest.TestCase):
             self.assertEqual(sorted(runs), ["", "HS.m1.rate0.2."])
             self.assertEqual(sorted(runs["HS.m1.rate0.2."]), ["imp0.04", "ref", "stock0.003"])
             rows = {row[0]: row for row in shear_table.table(runs["HS.m1.rate0.2."])}
-            cell, n, eta, error, kT, deviation, deviation_error, end = rows["imp0.04"]
+            cell, n, eta, error, kT, deviation, deviation_error, end, profile, lag = rows["imp0.04"]
             self.assertEqual(n, 2)
             self.assertAlmostEqual(eta, 0.95)
             self.assertAlmostEqual(error, 0.05)    # |a - b| / 2 for two seeds
@@ -49,6 +50,15 @@ class ShearTable(unittest.TestCase):
             # eta_v (the implicit scheme's second reading) against the same reference
             self.assertAlmostEqual(end[0], 100 * (1.15 / 1.1 - 1))
             self.assertIsNone(rows["stock0.003"][7])    # no eta_v in its RESULT line
+            # the profile's slope (0.51 and 0.52) against the RESULT line's rate 0.5
+            self.assertAlmostEqual(profile[0], 100 * (0.515 / 0.5 - 1))
+            self.assertAlmostEqual(profile[1], 100 * 0.005 / 0.5)
+            self.assertAlmostEqual(rows["ref"][8][0], 0.0)
+            # against the displacements' slope, seed by seed: (0.001, 0.002) / 0.5, both seeds
+            self.assertAlmostEqual(rows["imp0.04"][9][0], 100 * 0.0015 / 0.5)
+            self.assertAlmostEqual(rows["imp0.04"][9][1], 100 * 0.0005 / 0.5)
+            self.assertEqual(rows["imp0.04"][9][2], 2)
+            self.assertIsNone(rows["ref"][9])    # no sdisp in its RESULT line
 
     def test_diagonal_cells_and_a_reference_from_another_set(self):
         with tempfile.TemporaryDirectory() as directory:
@@ -89,8 +99,8 @@ class ShearTable(unittest.TestCase):
             records = shear_table.merge_summary(summary, shear_table.log_records(directory))
             runs = shear_table.runs_from_records(shear_table.read_summary(summary))
             self.assertEqual(len(records), 3)
-            self.assertEqual(runs["P.m1."]["ref"], [(1, 2.0, 1.0, None)])
-            self.assertEqual(runs["P.m1."]["imp"], [(1, 2.1, 1.0, None), (2, 2.3, 1.0, None)])
+            self.assertEqual(runs["P.m1."]["ref"], [(1, 2.0, 1.0, None, 1.0, None)])
+            self.assertEqual(runs["P.m1."]["imp"], [(1, 2.1, 1.0, None, 1.0, None), (2, 2.3, 1.0, None, 1.0, None)])
             self.assertEqual(records[0]["integ"], "stock")    # the RESULT line's fields are kept
 
 
