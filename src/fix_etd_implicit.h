@@ -78,6 +78,9 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator, public etd
     std::vector<double> positions;    // the owned atoms' positions at the search
     double cutoff = 0.0;              // the largest cutoff of the pair style and the friction
     double margin = 0.0;              // searched out to cutoff + margin
+    // slabs of the search at once, and who runs them (the KOKKOS variant: its host threads)
+    int chunks = 1;
+    etd::CellPairSearch::ChunkRunner runner;
   } own;
   const char *own_pairs_unsupported() const;
   bool own_pairs_pay() const;    // the default's choice: the search's cells stay sparse

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <random>
 #include <set>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -132,6 +133,49 @@ TEST(CellPairSearch, FarAtomKeepsTheGridSmall)
     for (int j = i + 1; j < a.count(); j++) expected += distance_squared(a, i, j) < 1.0;
   EXPECT_EQ(search.pairs(), expected);
   EXPECT_LT(search.memory_usage(), 1000000u);
+}
+
+// the rows of a list, in their order
+std::vector<std::vector<int>> rows(const etd::PairListView &view)
+{
+  std::vector<std::vector<int>> out;
+  for (int ii = 0; ii < view.inum; ii++) {
+    const int i = view.ilist[ii];
+    out.emplace_back(view.firstneigh[i], view.firstneigh[i] + view.numneigh[i]);
+  }
+  return out;
+}
+
+// slabs searched by a runner (threads, or one after another backwards) give the serial search's
+// list entry for entry, with both newton settings; and a runner's search repeated on a second
+// configuration leaves nothing of the first
+TEST(CellPairSearch, SlabsGiveTheSerialListEntryForEntry)
+{
+  const etd::CellPairSearch::ChunkRunner backwards = [](int n, const std::function<void(int)> &body) {
+    for (int k = n - 1; k >= 0; k--) body(k);
+  };
+  const etd::CellPairSearch::ChunkRunner threads = [](int n, const std::function<void(int)> &body) {
+    std::vector<std::thread> pool;
+    for (int k = 0; k < n; k++) pool.emplace_back(body, k);
+    for (std::thread &t : pool) t.join();
+  };
+  for (bool newton_off : {true, false}) {
+    for (unsigned seed : {5u, 6u}) {
+      const Atoms a = periodic_box(900, 7.0, 1.3, seed);
+      etd::CellPairSearch serial;
+      serial.build(a.x.data(), a.nlocal, a.count(), 1.1, newton_off);
+      const auto expected = rows(serial.view());
+      ASSERT_GT(serial.pairs(), 1000u);
+      static etd::CellPairSearch reused;    // (kept across configurations)
+      for (int chunks : {2, 3, 7, 100}) {
+        for (const auto *runner : {&backwards, &threads}) {
+          reused.build(a.x.data(), a.nlocal, a.count(), 1.1, newton_off, chunks, *runner);
+          EXPECT_EQ(rows(reused.view()), expected) << chunks << " chunks, newton_off " << newton_off;
+          EXPECT_EQ(reused.pairs(), serial.pairs());
+        }
+      }
+    }
+  }
 }
 
 TEST(CellPairSearch, NoOwnedAtoms)

@@ -9,8 +9,22 @@
 #include "neighbor.h"
 
 #include <cstring>
+#include <functional>
 
 using namespace LAMMPS_NS;
+
+// the scheme's own pair search runs its slabs of cells on the host's threads
+template <class DeviceType>
+FixETDImplicitKokkos<DeviceType>::FixETDImplicitKokkos(LAMMPS *lmp, int narg, char **arg) :
+    FixETDImplicit(lmp, narg, arg)
+{
+  using Host = Kokkos::DefaultHostExecutionSpace;
+  own.chunks = Host().concurrency();
+  own.runner = [](int n, const std::function<void(int)> &body) {
+    Kokkos::parallel_for("etd:pair_search", Kokkos::RangePolicy<Host>(0, n),
+                         [&](const int k) { body(k); });
+  };
+}
 
 template <class DeviceType> void *FixETDImplicitKokkos<DeviceType>::extract(const char *name, int &dim)
 {

@@ -2,7 +2,8 @@
 // images) the friction step runs in Kokkos kernels in DeviceType's execution space: the pairs'
 // assembly with their noise (friction_pairs_kokkos.h), the right-hand side, the block-Jacobi
 // preconditioner, G applied atom by atom and conjugate gradients (friction_solve_kokkos.h). The
-// pair search, the momentum correction and the drifts stay on the host; at steps that tally
+// scheme's pair search runs on the host's threads (slabs of cells at once, the same list); the
+// momentum correction and the drifts stay on the host; at steps that tally
 // the virial or the force split the pairs are copied back to the host, where those are summed.
 // Under fix deform ... remap v the pairs are assembled on the host; the zero-mass limit
 // (overdamped yes) and dpd/fpm's rotation solve on the host with the CPU solver.
@@ -19,7 +20,7 @@ namespace LAMMPS_NS {
 
 template <class DeviceType> class FixETDImplicitKokkos : public FixETDImplicit {
  public:
-  FixETDImplicitKokkos(class LAMMPS *lmp, int narg, char **arg) : FixETDImplicit(lmp, narg, arg) {}
+  FixETDImplicitKokkos(class LAMMPS *lmp, int narg, char **arg);
   // "kernel_solves", "kernel_assemblies" (dim 0, a double): how many solves, and pair
   // assemblies with their right-hand sides, of this run ran in the kernels
   void *extract(const char *name, int &dim) override;

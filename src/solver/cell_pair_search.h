@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace etd {
@@ -30,20 +31,33 @@ template <typename List> inline PairListView view_of(const List &list)
 
 class CellPairSearch {
  public:
+  // Runs body(k) for every k in [0, n), in any order, possibly at the same time (threads)
+  using ChunkRunner = std::function<void(int n, const std::function<void(int)> &body)>;
+
   // Every pair (i, j) with i < nlocal, j < nall and |x_i - x_j| < cutoff (x: nall rows of 3):
   //  - two owned atoms, once, listed from the lower index;
   //  - an owned atom and a ghost, listed from the owned atom: with newton_off always (the
   //    ghost's owner lists the pair too), otherwise once per pair of periodic images, where the
   //    ghost lies "above" (larger z, then y, then x): the images i - j' and j - i' of one pair
   //    are displaced oppositely, so exactly one of them is kept.
-  void build(const double *x, int nlocal, int nall, double cutoff, bool newton_off)
+  // With a runner, up to `chunks` slabs of cells are searched by it at once; the list is the
+  // same, entry for entry, whatever the chunks and however the runner orders them.
+  void build(const double *x, int nlocal, int nall, double cutoff, bool newton_off,
+             int chunks = 1, const ChunkRunner &runner = nullptr)
   {
     nlocal_ = nlocal;
-    first_.clear();
-    found_ = 0;
+    nchunks_ = 0;
     if (nlocal > 0) {
       bin(x, nall, cutoff);
-      collect(cutoff * cutoff);
+      nchunks_ = std::max(1, std::min(runner ? chunks : 1, n_[2]));
+      if (static_cast<int>(chunks_.size()) < nchunks_) chunks_.resize(nchunks_);
+      const double cutsq = cutoff * cutoff;
+      if (nchunks_ == 1)
+        collect(chunks_[0], 0, n_[2], cutsq);
+      else
+        runner(nchunks_, [this, cutsq](int k) {
+          collect(chunks_[k], k * n_[2] / nchunks_, (k + 1) * n_[2] / nchunks_, cutsq);
+        });
     }
     index(x, nlocal, newton_off);
   }
@@ -55,10 +69,12 @@ class CellPairSearch {
   std::size_t pairs() const { return neighbors_.size(); }
   std::size_t memory_usage() const
   {
+    std::size_t found = 0;
+    for (const Found &chunk : chunks_) found += chunk.first.capacity() + chunk.second.capacity();
     return sizeof(int) *
         (ilist_.capacity() + numneigh_.capacity() + neighbors_.capacity() + start_.capacity() +
          owned_.capacity() + sorted_.capacity() + first_.capacity() + second_.capacity() +
-         cell_of_.capacity()) +
+         cell_of_.capacity() + found) +
         sizeof(int *) * firstneigh_.capacity() + sizeof(double) * sorted_x_.capacity();
   }
 
@@ -121,28 +137,38 @@ class CellPairSearch {
     }
   }
 
-  // Every pair within the cutoff with at least one owned atom, once: each cell against itself
-  // and its 13 neighbours after it (in the order z, y, x). (Cells of half the cutoff, with
-  // their larger stencil, cost twice as much here: measured at 3,000 atoms.)
-  void collect(double cutsq)
+  // The pairs one slab of cells found, before they are indexed: `found` of them, as positions
+  // in sorted_ (second is written ahead of the count)
+  struct Found {
+    std::vector<int> first, second;
+    std::size_t found = 0;
+  };
+
+  // Every pair within the cutoff with at least one owned atom, once: each cell of the slab
+  // [z0, z1) against itself and its 13 neighbours after it (in the order z, y, x). (Cells of
+  // half the cutoff, with their larger stencil, cost twice as much here: measured at 3,000
+  // atoms.)
+  void collect(Found &out, int z0, int z1, double cutsq) const
   {
     static constexpr int forward[13][3] = {
         {1, 0, 0},  {-1, 1, 0}, {0, 1, 0}, {1, 1, 0},  {-1, -1, 1}, {0, -1, 1}, {1, -1, 1},
         {-1, 0, 1}, {0, 0, 1},  {1, 0, 1}, {-1, 1, 1}, {0, 1, 1},   {1, 1, 1}};
-    for (int cz = 0; cz < n_[2]; cz++)
+    out.first.clear();
+    out.found = 0;
+    for (int cz = z0; cz < z1; cz++)
       for (int cy = 0; cy < n_[1]; cy++)
         for (int cx = 0; cx < n_[0]; cx++) {
           const int c = cx + n_[0] * (cy + n_[1] * cz);
           const int a0 = start_[c], a1 = start_[c + 1];
           if (a0 == a1) continue;
           const int a_owned = a0 + owned_[c];
-          if (a_owned > a0) pair_cells(a0, a_owned, a1, a0, a1, a1, true, cutsq);
+          if (a_owned > a0) pair_cells(out, a0, a_owned, a1, a0, a1, a1, true, cutsq);
           for (const auto &d : forward) {
             const int x2 = cx + d[0], y2 = cy + d[1], z2 = cz + d[2];
             if (x2 < 0 || x2 >= n_[0] || y2 < 0 || y2 >= n_[1] || z2 >= n_[2]) continue;
             const int c2 = x2 + n_[0] * (y2 + n_[1] * z2);
             const int b0 = start_[c2];
-            pair_cells(a0, a_owned, a1, b0, b0 + owned_[c2], start_[c2 + 1], false, cutsq);
+            pair_cells(out, a0, a_owned, a1, b0, b0 + owned_[c2], start_[c2 + 1], false, cutsq);
           }
         }
   }
@@ -151,15 +177,16 @@ class CellPairSearch {
   // to a_owned and b_owned), or within A (same): a ghost of one is paired only with the owned
   // atoms of the other. Every candidate is written and the count advanced only for pairs in
   // range: about one candidate in six is kept, a branch the processor would mostly mispredict.
-  void pair_cells(int a0, int a_owned, int a1, int b0, int b_owned, int b1, bool same, double cutsq)
+  void pair_cells(Found &out, int a0, int a_owned, int a1, int b0, int b_owned, int b1, bool same,
+                  double cutsq) const
   {
     for (int a = a0; a < a1; a++) {
       const int first = same ? a + 1 : b0;
       const int last = a < a_owned ? b1 : (same ? a : b_owned);
       if (first >= last) continue;
-      if (found_ + (last - first) > second_.size())
-        second_.resize(2 * (found_ + (last - first)));
-      int *second = second_.data() + found_;
+      if (out.found + (last - first) > out.second.size())
+        out.second.resize(2 * (out.found + (last - first)));
+      int *second = out.second.data() + out.found;
       const double xa = sorted_x_[3 * a], ya = sorted_x_[3 * a + 1], za = sorted_x_[3 * a + 2];
       int kept = 0;
       for (int b = first; b < last; b++) {
@@ -169,29 +196,37 @@ class CellPairSearch {
         kept += (dx * dx + dy * dy + dz * dz < cutsq) ? 1 : 0;
       }
       if (kept == 0) continue;
-      first_.resize(found_ + kept, a);
-      found_ += kept;
+      out.first.resize(out.found + kept, a);
+      out.found += kept;
     }
   }
 
   // Each pair oriented (owned atom first, the lower index of two owned ones), kept or not by
-  // the newton setting, and sorted by its first atom into the list's rows.
+  // the newton setting, and sorted by its first atom into the list's rows (the slabs' pairs in
+  // slab order: the order one slab of all cells gives).
   void index(const double *x, int nlocal, bool newton_off)
   {
     ilist_.resize(nlocal);
     for (int i = 0; i < nlocal; i++) ilist_[i] = i;
     numneigh_.assign(nlocal, 0);
+    std::size_t total = 0;
+    for (int k = 0; k < nchunks_; k++) total += chunks_[k].found;
+    first_.resize(total);
+    second_.resize(total);
     std::size_t kept = 0;
-    for (std::size_t p = 0; p < found_; p++) {
-      int i = sorted_[first_[p]], j = sorted_[second_[p]];
-      if (i >= nlocal || (j < nlocal && j < i)) std::swap(i, j);
-      if (j >= nlocal && !newton_off &&
-          !above(x[3 * j] - x[3 * i], x[3 * j + 1] - x[3 * i + 1], x[3 * j + 2] - x[3 * i + 2]))
-        continue;
-      first_[kept] = i;
-      second_[kept] = j;
-      kept++;
-      numneigh_[i]++;
+    for (int k = 0; k < nchunks_; k++) {
+      const Found &chunk = chunks_[k];
+      for (std::size_t p = 0; p < chunk.found; p++) {
+        int i = sorted_[chunk.first[p]], j = sorted_[chunk.second[p]];
+        if (i >= nlocal || (j < nlocal && j < i)) std::swap(i, j);
+        if (j >= nlocal && !newton_off &&
+            !above(x[3 * j] - x[3 * i], x[3 * j + 1] - x[3 * i + 1], x[3 * j + 2] - x[3 * i + 2]))
+          continue;
+        first_[kept] = i;
+        second_[kept] = j;
+        kept++;
+        numneigh_[i]++;
+      }
     }
     neighbors_.resize(kept);
     firstneigh_.resize(nlocal);
@@ -209,10 +244,9 @@ class CellPairSearch {
   int n_[3] = {1, 1, 1};
   std::vector<int> cell_of_, start_, owned_, sorted_, fill_;    // owned_: per cell, its owned atoms
   std::vector<double> sorted_x_;
-  // the pairs found, before they are indexed: found_ of them, as positions in sorted_ (second_
-  // is written ahead of the count)
-  std::vector<int> first_, second_;
-  std::size_t found_ = 0;
+  std::vector<Found> chunks_;    // the pairs each slab found; nchunks_ of them this search
+  int nchunks_ = 0;
+  std::vector<int> first_, second_;    // the kept pairs, oriented (atom indices)
   std::vector<int> ilist_, numneigh_, neighbors_;
   std::vector<int *> firstneigh_;
 };
