@@ -3,8 +3,9 @@
 // gamma w_D and noise sigma w_R theta, with the tests and arithmetic of
 // FrictionPairAssembly::build() and in its order (atom by atom, in the list's order), so the
 // noise and the solve's sums are the host assembly's. Pure Kokkos (no LAMMPS); dpd/gen-type
-// pairs only (no dpd/fpm, no moving images). Two passes over the candidates: a count per atom,
-// whose scan places each atom's pairs, then the fill.
+// pairs only (no dpd/fpm, no moving images). One pass over the candidates writes each atom's
+// pairs from the slot of its first candidate on; a scan of the counts places them, and a copy
+// packs them together.
 #ifndef ETD_FRICTION_PAIRS_KOKKOS_H
 #define ETD_FRICTION_PAIRS_KOKKOS_H
 
@@ -84,20 +85,46 @@ template <class DeviceType> class FrictionPairsKokkos {
       Kokkos::deep_copy(tag_, h_tag);
     }
     const Candidates candidates = candidates_of(in);
+    // where each listed atom's candidates start (the list's rows, end to end)
+    const int ncandidates = candidate_starts(in);
+    auto candidate_start = list_in_place_ ? candidate_start_ : list_start_;
 
-    // how many pairs each listed atom has, and whether one has an atom outside the group
+    // one pass over the candidates: each atom's pairs written from its first candidate's slot
+    // on, how many it has, and whether one has an atom outside the group
     kk::grow(pair_start_, in.inum + 1);
+    kk::grow(staged_partner_, ncandidates);
+    kk::grow(staged_geometry_, ncandidates);
+    kk::grow(staged_noise_, ncandidates);
+    kk::grow(staged_distance_, ncandidates);
     auto pair_start = pair_start_;
+    auto partner_at = staged_partner_;
+    auto geometry_at = staged_geometry_;
+    auto noise_at = staged_noise_;
+    auto distance_at = staged_distance_;
+    const PairNoise noise = noise_;
+    auto tags = tag_;
+    const std::int64_t step = in.step;
     int fixed = 0;
     Kokkos::parallel_reduce(
-        "etd:pairs_count", Kokkos::RangePolicy<execution_space>(0, in.inum),
+        "etd:pairs_fill", Kokkos::RangePolicy<execution_space>(0, in.inum),
         KOKKOS_LAMBDA(const int ii, int &any_fixed) {
-          int count = 0;
-          candidates.visit(ii, [&](int, int, int, const double *, double, double, bool held) {
-            count++;
+          const int first = candidate_start(ii);
+          int at = first;
+          candidates.visit(ii, [&](int i, int j, int partner, const double *d, double rsq,
+                                   double factor, bool held) {
+            const double r = std::sqrt(rsq);
+            const double inv_r = 1.0 / r;
+            const PairDissipation dissipation =
+                pair_dissipation(candidates.coefficients(i, j), r, factor);
+            partner_at(at) = partner;
+            for (int k = 0; k < 3; k++) geometry_at(at, k) = static_cast<float>(d[k] * inv_r);
+            geometry_at(at, 3) = static_cast<float>(dissipation.friction);
+            noise_at(at) = dissipation.noise * noise.gaussian(tags(i), tags(j), step);
+            distance_at(at) = r;
+            at++;
             if (held) any_fixed = 1;
           });
-          pair_start(ii) = count;
+          pair_start(ii) = at - first;
         },
         Kokkos::Max<int>(fixed));
     // where each atom's pairs start (exclusive scan; the last entry is the total)
@@ -121,27 +148,20 @@ template <class DeviceType> class FrictionPairsKokkos {
     auto geometry = geometry_;
     auto noise_values = noise_values_;
     auto distance = distance_;
-    const PairNoise noise = noise_;
-    auto tags = tag_;
-    const std::int64_t step = in.step;
+    auto ilist = ilist_;
+    // the pairs moved together, in the list's order
     Kokkos::parallel_for(
-        "etd:pairs_fill", Kokkos::RangePolicy<execution_space>(0, in.inum),
+        "etd:pairs_pack", Kokkos::RangePolicy<execution_space>(0, in.inum),
         KOKKOS_LAMBDA(const int ii) {
-          int at = pair_start(ii);
-          candidates.visit(ii, [&](int i, int j, int partner, const double *d, double rsq,
-                                   double factor, bool) {
-            const double r = std::sqrt(rsq);
-            const double inv_r = 1.0 / r;
-            const PairDissipation dissipation =
-                pair_dissipation(candidates.coefficients(i, j), r, factor);
-            pair_i(at) = i;
-            pair_j(at) = partner;
-            for (int k = 0; k < 3; k++) geometry(at, k) = static_cast<float>(d[k] * inv_r);
-            geometry(at, 3) = static_cast<float>(dissipation.friction);
-            noise_values(at) = dissipation.noise * noise.gaussian(tags(i), tags(j), step);
-            distance(at) = r;
-            at++;
-          });
+          const int i = ilist(ii);
+          const int from = candidate_start(ii);
+          for (int to = pair_start(ii), at = from; to < pair_start(ii + 1); to++, at++) {
+            pair_i(to) = i;
+            pair_j(to) = partner_at(at);
+            for (int k = 0; k < 4; k++) geometry(to, k) = geometry_at(at, k);
+            noise_values(to) = noise_at(at);
+            distance(to) = distance_at(at);
+          }
         });
     return fixed > 0;    // (Max starts from the lowest int, where no atom is listed)
   }
@@ -245,9 +265,14 @@ template <class DeviceType> class FrictionPairsKokkos {
   Values x_;
   Indices type_, mask_, ghost_partner_;
   Tags tag_;
+  Indices candidate_start_;    // where each listed atom's candidates start (a list read in place)
   Indices pair_start_, pair_i_, pair_j_;
   Geometry geometry_;
   Values noise_values_, distance_;
+  // the pairs at their atoms' candidate slots, before they are packed
+  Indices staged_partner_;
+  Geometry staged_geometry_;
+  Values staged_noise_, staged_distance_;
 
   Candidates candidates_of(const Input &in) const
   {
@@ -275,6 +300,23 @@ template <class DeviceType> class FrictionPairsKokkos {
     c.tag = tag_;
     c.table = coefficients_;
     return c;
+  }
+
+  // How many candidates the listed atoms have; where the list is read in place, also where each
+  // atom's start (the compressed rows hold that already)
+  int candidate_starts(const Input &in)
+  {
+    if (!list_in_place_) {
+      int entries = 0;
+      for (int ii = 0; ii < in.inum; ii++) entries += in.numneigh[in.ilist[ii]];
+      return entries;
+    }
+    kk::grow(candidate_start_, in.inum + 1);
+    auto h_start = Kokkos::create_mirror_view(candidate_start_);
+    h_start(0) = 0;
+    for (int ii = 0; ii < in.inum; ii++) h_start(ii + 1) = h_start(ii) + in.numneigh[in.ilist[ii]];
+    Kokkos::deep_copy(candidate_start_, h_start);
+    return h_start(in.inum);
   }
 
   // the list in compressed rows, in DeviceType's memory (where its kernels cannot read LAMMPS's)

@@ -125,8 +125,8 @@ template <class DeviceType> class FrictionSolveKokkos {
     Kokkos::parallel_for(
         "etd:incidence_count", Kokkos::RangePolicy<execution_space>(0, npairs),
         KOKKOS_LAMBDA(const int p) {
-          Kokkos::atomic_increment(&offsets(pair_i(p) + 1));
-          if (pair_j(p) < nowned) Kokkos::atomic_increment(&offsets(pair_j(p) + 1));
+          Kokkos::atomic_inc(&offsets(pair_i(p) + 1));
+          if (pair_j(p) < nowned) Kokkos::atomic_inc(&offsets(pair_j(p) + 1));
         });
     int entries = 0;
     Kokkos::parallel_scan(
