@@ -254,12 +254,21 @@ void FrictionPairAssembly::accumulate_blocks(std::vector<double> &diagonal, int 
 }
 
 void FrictionPairAssembly::adopt_pairs(std::vector<FrictionPair> pairs, std::vector<double> noise,
-                                       std::vector<double> distance, int nlocal)
+                                       std::vector<double> distance, int nlocal,
+                                       std::vector<double> offsets)
 {
-  clear(false, nlocal);
+  clear(!offsets.empty(), nlocal);
   pairs_ = std::move(pairs);
   pair_noise_ = std::move(noise);
   pair_distance_ = std::move(distance);
+  pair_offset_ = std::move(offsets);
+  // (build() sums the pairs with a moving image, in pair order)
+  const OwnedOnly keep_j{nlocal};
+  for (size_t n = 0; n < pair_offset_.size() / 3; n++) {
+    const double *offset = &pair_offset_[3 * n];
+    if (offset[0] != 0.0 || offset[1] != 0.0 || offset[2] != 0.0)
+      accumulate_image_offset(pairs_[n], offset, image_friction_.data(), keep_j, dofs_);
+  }
   find_runs(pairs_, pair_runs_);
 }
 

@@ -69,7 +69,9 @@ class FrictionPairAssembly {
   // For an assembly elsewhere (the KOKKOS styles' kernels): each type pair's coefficients
   // (nullptr: none; types 1..ntypes, ntypes1() = ntypes + 1), the largest squared friction
   // cutoff, the noise, and the pairs it made, handed back (as build() would have made them,
-  // without dpd/fpm pairs or moving images) for what reads them on the host
+  // without dpd/fpm pairs) for what reads them on the host; under moving images with each
+  // pair's image velocity offset (3 values per pair; empty: none), from which the constant part
+  // of G is summed as build() sums it
   const PairCoefficients *coefficients(int itype, int jtype) const
   {
     return pair_table_[itype * ntypes1_ + jtype];
@@ -79,7 +81,7 @@ class FrictionPairAssembly {
   double friction_cutsq_max() const { return friction_cutsq_max_; }
   const PairNoise &noise() const { return noise_; }
   void adopt_pairs(std::vector<FrictionPair> pairs, std::vector<double> noise,
-                   std::vector<double> distance, int nlocal);
+                   std::vector<double> distance, int nlocal, std::vector<double> offsets = {});
 
  private:
   std::vector<const PairCoefficients *> pair_table_;    // (ntypes+1)^2, nullptr: no DPD

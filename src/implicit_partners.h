@@ -67,6 +67,8 @@ class PartnerMap {
   // the velocity a periodic image has on top of its owner's under fix deform ... remap v, as
   // LAMMPS's own ghost communication adds it (AtomVec::pack_comm_vel); false where it has none
   bool image_velocity(LAMMPS_NS::LAMMPS *lmp, int ghost, double offset[3]) const;
+  // per atom (owned, then ghosts), 6 values: its count of each box vector from its owner
+  const std::vector<double> &image_counts() const { return image_; }
   // fills the slots of a per-partner vector (width values each) from their owners
   void exchange(double *values, int nlocal, int width)
   {

@@ -296,6 +296,28 @@ TEST(FrictionSolveKokkos, RightHandSideMatchesTheHostSums)
     EXPECT_NEAR(b[k], expected[k], 1e-12 * (1.0 + std::fabs(expected[k]))) << "unknown " << k;
     EXPECT_NEAR(friction[k], gu[k], 1e-12 * (1.0 + std::fabs(gu[k]))) << "unknown " << k;
   }
+
+  // moving images: every third pair's other end moves on top of its owner (fix deform ...
+  // remap v); b less h G_offset, summed as the host assembly sums it, in pair order
+  std::vector<double> offsets(3 * c.pairs.size(), 0.0), image_friction(n, 0.0);
+  for (size_t p = 0; p < c.pairs.size(); p += 3)
+    for (int k = 0; k < 3; k++) offsets[3 * p + k] = normal(gen);
+  for (size_t p = 0; p < c.pairs.size(); p += 3)
+    etd::accumulate_image_offset(c.pairs[p], &offsets[3 * p], image_friction.data(), keep_j);
+  etd::FrictionSolveKokkos<Device>::Values offset_view("offsets", offsets.size());
+  auto h_offsets = Kokkos::create_mirror_view(offset_view);
+  for (size_t k = 0; k < offsets.size(); k++) h_offsets(k) = offsets[k];
+  Kokkos::deep_copy(offset_view, h_offsets);
+  kernels.step_rhs(inertia.data(), v.data(), u.data(), noise_view, h, b.data(), friction.data(),
+                   &offset_view);
+  double largest = 0.0;
+  for (int k = 0; k < n; k++) {
+    const double moved = expected[k] - h * image_friction[k];
+    EXPECT_NEAR(b[k], moved, 1e-12 * (1.0 + std::fabs(moved))) << "unknown " << k;
+    EXPECT_NEAR(friction[k], gu[k], 1e-12 * (1.0 + std::fabs(gu[k]))) << "unknown " << k;
+    largest = std::max(largest, std::fabs(h * image_friction[k]));
+  }
+  EXPECT_GT(largest, 1e-3);    // (the images' friction is a visible part of b)
 }
 
 // The pairs' assembly in kernels against its rules written out here: a half list of candidates
@@ -346,9 +368,22 @@ TEST(FrictionPairsKokkos, AssemblesThePairsTheHostRulesGive)
   const etd::PairNoise noise(77, etd::NoiseStream::Integrator);
   const std::int64_t step = 12;
 
-  for (const bool copy_list : {false, true}) {
+  // moving images (fix deform ... remap v): each ghost's count of box vectors from its owner;
+  // ghost 41 lies outside the deforming group (bit 2), so its image has no velocity of its own
+  std::vector<double> image(6 * nall, 0.0);
+  image[6 * 40 + 1] = 1.0;                          // one box vector y up
+  image[6 * 41 + 0] = -1.0;                         // (outside the deforming group)
+  image[6 * 42 + 1] = -1.0, image[6 * 42 + 2] = 1.0;
+  image[6 * 43 + 5] = 2.0;
+  const double rate[6] = {0.0, 0.0, 0.0, 0.1, 0.2, 0.5};    // h_rate: xy, xz, yz tilt rates
+  std::vector<int> deform_mask = mask;
+  for (int a = 0; a < nall; a++) deform_mask[a] = mask[a] | (a == 41 ? 0 : 2);
+
+  for (const bool copy_list : {false, true})
+  for (const bool moving : {false, true}) {
     SCOPED_TRACE(copy_list ? "the list copied into compressed rows (a GPU's path)"
                            : "the list read in place");
+    SCOPED_TRACE(moving ? "moving images" : "images at rest");
     etd::FrictionPairsKokkos<Device> kernels;
     kernels.copy_the_list(copy_list);
     kernels.set_coefficients(table, 3, noise);
@@ -364,16 +399,24 @@ TEST(FrictionPairsKokkos, AssemblesThePairsTheHostRulesGive)
     in.special = special;
     in.x = x.data();
     in.type = type.data();
-    in.mask = mask.data();
+    in.mask = moving ? deform_mask.data() : mask.data();
     in.ghost_partner = ghost_partner.data();
+    if (moving) {
+      in.image = image.data();
+      for (int k = 0; k < 6; k++) in.image_rate[k] = rate[k];
+      in.deform_groupbit = 2;
+    }
     in.groupbit = 1;
     in.newton_off = true;
     in.step = step;
     in.cutsq_max = 0.81;
     const bool fixed = kernels.build(in, tag.data());
     std::vector<etd::FrictionPair> pairs;
-    std::vector<double> pair_noise, distance;
-    kernels.copy_to_host(pairs, pair_noise, distance);
+    std::vector<double> pair_noise, distance, offsets;
+    kernels.copy_to_host(pairs, pair_noise, distance, &offsets);
+    EXPECT_EQ(offsets.size(), moving ? 3 * pairs.size() : 0u);
+    EXPECT_EQ(kernels.offsets() != nullptr, moving);
+    int moving_pairs = 0;
 
     // the rules
     size_t p = 0;
@@ -398,6 +441,18 @@ TEST(FrictionPairsKokkos, AssemblesThePairsTheHostRulesGive)
         EXPECT_EQ(pairs[p].friction, float(w.friction));
         EXPECT_EQ(pair_noise[p], w.noise * noise.gaussian(tag[i], tag[j], step));
         EXPECT_EQ(distance[p], r);
+        if (moving) {
+          // v_image - v_owner = n_x rate_x-vector + ...: (n0 r0 + n5 r5 + n4 r4, n1 r1 + n3 r3, n2 r2)
+          double expected[3] = {0.0, 0.0, 0.0};
+          if (j >= nlocal && j != 41) {
+            const double *m = &image[6 * j];
+            expected[0] = m[0] * rate[0] + m[5] * rate[5] + m[4] * rate[4];
+            expected[1] = m[1] * rate[1] + m[3] * rate[3];
+            expected[2] = m[2] * rate[2];
+          }
+          for (int k = 0; k < 3; k++) EXPECT_EQ(offsets[3 * p + k], expected[k]) << "pair " << p;
+          moving_pairs += expected[0] != 0.0 || expected[1] != 0.0 || expected[2] != 0.0;
+        }
         expect_fixed = expect_fixed || !mask[i] || !mask[j];
         special_pairs += factor == 0.5;
         image_pairs += j >= nlocal && partner < nlocal;
@@ -412,5 +467,6 @@ TEST(FrictionPairsKokkos, AssemblesThePairsTheHostRulesGive)
     EXPECT_EQ(special_pairs, 1);
     EXPECT_GT(image_pairs, 0);
     EXPECT_GT(slot_pairs, 0);
+    if (moving) EXPECT_GT(moving_pairs, 2);
   }
 }

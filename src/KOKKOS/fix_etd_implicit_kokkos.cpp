@@ -67,10 +67,10 @@ template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::setup(int vfl
   FixETDImplicit::setup(vflag);
 }
 
-// the kernels assemble dpd/gen-type pairs for the inertial scheme without moving images
+// the kernels assemble dpd/gen-type pairs for the inertial scheme
 template <class DeviceType> bool FixETDImplicitKokkos<DeviceType>::assembles_in_kernels() const
 {
-  return !options.overdamped && dofs == 3 && !assembly.has_fpm_pairs() && !domain->deform_vremap;
+  return !options.overdamped && dofs == 3 && !assembly.has_fpm_pairs();
 }
 
 template <class DeviceType>
@@ -97,15 +97,21 @@ bool FixETDImplicitKokkos<DeviceType>::assemble_pairs(
   in.newton_off = context.list_newton_off;
   in.step = context.step;
   in.cutsq_max = assembly.friction_cutsq_max();
+  if (domain->deform_vremap) {    // moving images (fix deform ... remap v)
+    in.image = partners.image_counts().data();
+    for (int k = 0; k < 6; k++) in.image_rate[k] = domain->h_rate[k];
+    in.deform_groupbit = domain->deform_groupbit;
+  }
   const bool fixed_partner = pairs_kk.build(in, atom->tag);
   pairs_on_device = true;
   kernel_assemblies += 1.0;
   // the virial and the force split are summed on the host from the assembly's pairs
   if (virial_this_step || split_requested) {
     std::vector<etd::FrictionPair> pairs;
-    std::vector<double> noise, distance;
-    pairs_kk.copy_to_host(pairs, noise, distance);
-    assembly.adopt_pairs(std::move(pairs), std::move(noise), std::move(distance), atom->nlocal);
+    std::vector<double> noise, distance, offsets;
+    pairs_kk.copy_to_host(pairs, noise, distance, &offsets);
+    assembly.adopt_pairs(std::move(pairs), std::move(noise), std::move(distance), atom->nlocal,
+                         std::move(offsets));
     pairs_on_host = true;
   } else {
     assembly.adopt_pairs({}, {}, {}, atom->nlocal);    // none on the host this step
@@ -130,7 +136,8 @@ template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::friction_rhs(
   // G u for the solve's start from the old velocities
   work.gu_rhs.resize(3 * nlocal);
   kernels.step_rhs(work.inertia.data(), v.data(), work.u.data(), pairs_kk.noise(), dt,
-                   work.step_rhs.data(), options.warm_start ? work.gu_rhs.data() : nullptr);
+                   work.step_rhs.data(), options.warm_start ? work.gu_rhs.data() : nullptr,
+                   pairs_kk.offsets());
 }
 
 template <class DeviceType>

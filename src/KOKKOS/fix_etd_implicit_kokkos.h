@@ -5,7 +5,7 @@
 // scheme's pair search runs on the host's threads (slabs of cells at once, the same list); the
 // momentum correction and the drifts stay on the host; at steps that tally
 // the virial or the force split the pairs are copied back to the host, where those are summed.
-// Under fix deform ... remap v the pairs are assembled on the host; the zero-mass limit
+// Under fix deform ... remap v the pairs carry their images' velocities. The zero-mass limit
 // (overdamped yes) and dpd/fpm's rotation solve on the host with the CPU solver.
 #ifndef ETD_FIX_ETD_IMPLICIT_KOKKOS_H
 #define ETD_FIX_ETD_IMPLICIT_KOKKOS_H

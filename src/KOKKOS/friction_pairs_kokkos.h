@@ -3,7 +3,8 @@
 // gamma w_D and noise sigma w_R theta, with the tests and arithmetic of
 // FrictionPairAssembly::build() and in its order (atom by atom, in the list's order), so the
 // noise and the solve's sums are the host assembly's. Pure Kokkos (no LAMMPS); dpd/gen-type
-// pairs only (no dpd/fpm, no moving images). One pass over the candidates writes each atom's
+// pairs only (no dpd/fpm). Under moving images (fix deform ... remap v) each pair also carries
+// the velocity its ghost's image has on top of its owner's. One pass over the candidates writes each atom's
 // pairs from the slot of its first candidate on; a scan of the counts places them, and a copy
 // packs them together.
 #ifndef ETD_FRICTION_PAIRS_KOKKOS_H
@@ -46,6 +47,11 @@ template <class DeviceType> class FrictionPairsKokkos {
     bool newton_off = false;    // an image pair is listed from both ends
     std::int64_t step = 0;
     double cutsq_max = 0.0;    // the largest squared friction cutoff
+    // moving images: per atom (nall) 6 counts of box vectors from its owner (nullptr: no
+    // moving images), the box vectors' rates (LAMMPS's h_rate) and the deforming group's bit
+    const double *image = nullptr;
+    double image_rate[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    int deform_groupbit = 0;
   };
 
   // Each type pair's coefficients (nullptr: no friction pair; ntypes1 = ntypes + 1) and the
@@ -78,6 +84,8 @@ template <class DeviceType> class FrictionPairsKokkos {
     kk::upload(type_, in.type, in.nall);
     kk::upload(mask_, in.mask, in.nall);
     kk::upload(ghost_partner_, in.ghost_partner, in.nall - in.nlocal);
+    moving_images_ = in.image != nullptr;
+    if (moving_images_) kk::upload(image_, in.image + 6 * in.nlocal, 6 * (in.nall - in.nlocal));
     kk::grow(tag_, in.nall);
     {
       auto h_tag = Kokkos::create_mirror_view(tag_);
@@ -96,11 +104,18 @@ template <class DeviceType> class FrictionPairsKokkos {
     kk::grow(staged_geometry_, ncandidates);
     kk::grow(staged_noise_, ncandidates);
     kk::grow(staged_distance_, ncandidates);
+    if (moving_images_) kk::grow(staged_offset_, 3 * ncandidates);
     auto pair_start = pair_start_;
     auto partner_at = staged_partner_;
     auto geometry_at = staged_geometry_;
     auto noise_at = staged_noise_;
     auto distance_at = staged_distance_;
+    auto offset_at = staged_offset_;
+    const bool moving = moving_images_;
+    auto image = image_;
+    const int nlocal = in.nlocal, deform_groupbit = in.deform_groupbit;
+    double rate[6];
+    for (int k = 0; k < 6; k++) rate[k] = in.image_rate[k];
     const PairNoise noise = noise_;
     auto tags = tag_;
     const std::int64_t step = in.step;
@@ -121,6 +136,17 @@ template <class DeviceType> class FrictionPairsKokkos {
             geometry_at(at, 3) = static_cast<float>(dissipation.friction);
             noise_at(at) = dissipation.noise * noise.gaussian(tags(i), tags(j), step);
             distance_at(at) = r;
+            if (moving) {
+              // (as PartnerMap::image_velocity adds it: zero for an owned atom)
+              double offset[3] = {0.0, 0.0, 0.0};
+              if (j >= nlocal && (candidates.mask(j) & deform_groupbit)) {
+                const int g = 6 * (j - nlocal);
+                offset[0] = image(g) * rate[0] + image(g + 5) * rate[5] + image(g + 4) * rate[4];
+                offset[1] = image(g + 1) * rate[1] + image(g + 3) * rate[3];
+                offset[2] = image(g + 2) * rate[2];
+              }
+              for (int k = 0; k < 3; k++) offset_at(3 * at + k) = offset[k];
+            }
             at++;
             if (held) any_fixed = 1;
           });
@@ -143,6 +169,8 @@ template <class DeviceType> class FrictionPairsKokkos {
     kk::grow(geometry_, total);
     kk::grow(noise_values_, total);
     kk::grow(distance_, total);
+    if (moving) kk::grow(offsets_, 3 * total);
+    auto offsets = offsets_;
     auto pair_i = pair_i_;
     auto pair_j = pair_j_;
     auto geometry = geometry_;
@@ -161,6 +189,8 @@ template <class DeviceType> class FrictionPairsKokkos {
             for (int k = 0; k < 4; k++) geometry(to, k) = geometry_at(at, k);
             noise_values(to) = noise_at(at);
             distance(to) = distance_at(at);
+            if (moving)
+              for (int k = 0; k < 3; k++) offsets(3 * to + k) = offset_at(3 * at + k);
           }
         });
     return fixed > 0;    // (Max starts from the lowest int, where no atom is listed)
@@ -171,11 +201,18 @@ template <class DeviceType> class FrictionPairsKokkos {
   const Indices &pair_j() const { return pair_j_; }
   const Geometry &geometry() const { return geometry_; }
   const Values &noise() const { return noise_values_; }    // sigma w_R theta per pair
+  // under moving images, each pair's image velocity offset (3 values per pair), else nullptr
+  const Values *offsets() const { return moving_images_ ? &offsets_ : nullptr; }
 
-  // the pairs in host memory, as FrictionPairAssembly holds them (for the virial and the split)
+  // the pairs in host memory, as FrictionPairAssembly holds them (for the virial and the split);
+  // offsets: under moving images, 3 per pair (else left empty)
   void copy_to_host(std::vector<FrictionPair> &pairs, std::vector<double> &noise,
-                    std::vector<double> &distance) const
+                    std::vector<double> &distance, std::vector<double> *offsets = nullptr) const
   {
+    if (offsets) {
+      offsets->assign(moving_images_ ? 3 * npairs_ : 0, 0.0);
+      if (moving_images_ && npairs_ > 0) kk::download(offsets_, offsets->data(), 3 * npairs_);
+    }
     const int n = npairs_;
     auto h_i = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pair_i_);
     auto h_j = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pair_j_);
@@ -266,6 +303,8 @@ template <class DeviceType> class FrictionPairsKokkos {
   Indices type_, mask_, ghost_partner_;
   Tags tag_;
   Indices candidate_start_;    // where each listed atom's candidates start (a list read in place)
+  bool moving_images_ = false;
+  Values image_, offsets_, staged_offset_;    // ghosts' image counts; per pair, offsets
   Indices pair_start_, pair_i_, pair_j_;
   Geometry geometry_;
   Values noise_values_, distance_;

@@ -186,10 +186,12 @@ template <class DeviceType> class FrictionSolveKokkos {
 
   // The friction step's right-hand side over the owned atoms, b = M v - (h/2) G u +
   // sqrt(h) sum_pairs (+-) noise e (+ on the pair's i, - on its j), with u given on all partners
-  // and the pairs' noise sigma w_R theta; with gu (optional) also G u. Host arrays: inertia, v,
+  // and the pairs' noise sigma w_R theta; with gu (optional) also G u. Under moving images
+  // (image_offsets: 3 per pair, the velocity of the pair's ghost image on top of its owner's)
+  // b also holds -h G_offset, the friction of the images' velocities. Host arrays: inertia, v,
   // b, gu 3 nowned values, u 3 npartners.
   void step_rhs(const double *inertia, const double *v, const double *u, const Values &noise,
-                double h, double *b, double *gu)
+                double h, double *b, double *gu, const Values *image_offsets = nullptr)
   {
     const int n = 3 * nowned_;
     kk::upload(inertia_, inertia, n);
@@ -205,6 +207,8 @@ template <class DeviceType> class FrictionSolveKokkos {
     auto given = x_;
     auto rhs = b_;
     auto friction = w_;
+    const bool moving = image_offsets != nullptr;
+    const Values offset = moving ? *image_offsets : Values();
     const double half_h = 0.5 * h, root_h = std::sqrt(h);
     Kokkos::parallel_for(
         "etd:step_rhs", Kokkos::RangePolicy<execution_space>(0, nowned_),
@@ -218,10 +222,28 @@ template <class DeviceType> class FrictionSolveKokkos {
             for (int k = 0; k < 3; k++)
               impulse[k] += end(e) > 0 ? amount * geometry(p, k) : -(amount * geometry(p, k));
           }
+          // moving images: G's constant part, gamma w_D (e . (0 - offset)) e on the pair, in
+          // pair order (as FrictionPairAssembly::build() sums it)
+          double image_friction[3] = {0.0, 0.0, 0.0};
+          if (moving)
+            for (int e = offsets(a); e < offsets(a + 1); e++) {
+              const int p = incidence(e);
+              const double o[3] = {offset(3 * p), offset(3 * p + 1), offset(3 * p + 2)};
+              if (o[0] == 0.0 && o[1] == 0.0 && o[2] == 0.0) continue;
+              const double projected = geometry(p, 3) *
+                  (geometry(p, 0) * (0.0 - o[0]) + geometry(p, 1) * (0.0 - o[1]) +
+                   geometry(p, 2) * (0.0 - o[2]));
+              for (int k = 0; k < 3; k++)
+                if (end(e) > 0)
+                  image_friction[k] += projected * geometry(p, k);
+                else
+                  image_friction[k] -= projected * geometry(p, k);
+            }
           for (int k = 0; k < 3; k++) {
             const int d = 3 * a + k;
             friction(d) = g[k];
             rhs(d) = inertia_view(d) * rhs(d) - half_h * g[k] + impulse[k];
+            if (moving) rhs(d) -= h * image_friction[k];
           }
         });
     kk::download(b_, b, n);
