@@ -262,14 +262,16 @@ VISCOSITY_FORCE = {"GW": 0.02, "HG": 0.3, "S2": 3.0, "P": 0.3, "HS": 3.0}
 
 
 def cmd_time_matrix(args):
-    """Times every integrator of each (fluid, mass) of the scans at its largest step, alternated
-    in rounds."""
+    """Times every integrator of each (fluid, mass) of the scans at its largest step (the seed
+    check's, capped by the viscosity under shear), alternated in rounds."""
     from etddpd import accuracy_matrix as am
     cell_list = am.cells(am.read_jsonl(os.path.join(RESULTS, "scan.jsonl")))
     confirm = os.path.join(RESULTS, "confirm.jsonl")
     checked = am.seed_check(am.read_jsonl(confirm)) if os.path.exists(confirm) else None
+    shear = os.path.join(RESULTS, "viscosity_shear.jsonl")
+    viscosity = am.viscosity_deviations(am.read_jsonl(shear)) if os.path.exists(shear) else None
     steps = {}
-    for row in am.summary_rows(cell_list, checked=checked):
+    for row in am.summary_rows(cell_list, checked=checked, viscosity=viscosity):
         if row["dt"] is not None and (not args.fluid or row["fluid"] in args.fluid) \
                 and (not args.mass or row["mass"] in args.mass):
             steps.setdefault((row["fluid"], row["mass"]), set()).add((row["integrator"], row["dt"]))

@@ -43,8 +43,8 @@ which=${2:-GW}
 # convergence), P m = 1 the implicit scheme at 0.06 and 0.04 (+3.2 % at 0.08); m = 0.01 the
 # default at the step the seed check confirms; m = 0.001 the options at the default's step (at
 # 0.0015 their viscosity is 3-4 % high); P m = 0.1 at 0.015 and 0.01 (at 0.02 its viscosity is
-# 2.8 % high); P m = 0.01 the implicit scheme at 0.004 and 0.003, the options at 0.003 (at
-# 0.005 / 0.004 its viscosity is 2.7 / 1.7 % high); P m = 0.001 the options at 0.0015 (+3.3 %
+# 2.8 % high); P m = 0.01 the implicit scheme at 0.004 and 0.003, the options at 0.003 and at
+# their equilibrium step 0.005 (at 0.005 / 0.004 the default's viscosity is 2.7 / 1.0 % high); P m = 0.001 the options at 0.0015 (+3.3 %
 # at 0.002); HS m = 0.01 and 0.001 the implicit scheme at a step 3.5 and 2 times smaller (its
 # convergence)
 extras=""
@@ -60,7 +60,7 @@ case "$which:$mass" in
   P:1) prefix="P.m1."; steps=(0.001 0.003 0.08 -); extras="imp0.06:0.06 imp0.04:0.04"; ref_integ=nve ;;
   P:0.1) prefix="P.m0.1."; steps=(0.0003 0.002 0.02 -); extras="imp0.015:0.015 imp0.01:0.01 diag0.003:0.003" ;;
   P:0.01) prefix="P.m0.01."; steps=(0.0001 0.0003 0.005 0.004)
-    extras="diag0.0003:0.0003 imp0.004:0.004 imp0.003:0.003 impv0.003:0.003"; ref_integ=nve ;;
+    extras="diag0.0003:0.0003 imp0.004:0.004 imp0.003:0.003 impv0.003:0.003 impv0.005:0.005"; ref_integ=nve ;;
   P:0.001) prefix="P.m0.001."; steps=(0.000015 0.00003 0.0015 0.002)
     extras="imp0.001:0.001 imp0.0005:0.0005 impv0.0015:0.0015"
     ref_integ=nve ;;

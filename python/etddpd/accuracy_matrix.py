@@ -3,17 +3,33 @@ stock velocity-Verlet at a small step, observable by observable, the largest ste
 tolerance, and the speed-up at equal accuracy.
 
 Records are the JSON lines of bench/accuracy/run.py: scan.jsonl (equilibrium observables per
-window) and timing.jsonl (loop times of alternated runs).
+window) and timing.jsonl (loop times of alternated runs); and of viscosity_shear.sh:
+viscosity_shear.jsonl (the viscosity under shear per seed), which caps a largest step where the
+viscosity there is outside its tolerance.
 """
 import json
+import re
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from .statistics import standard_error
 
-# the issue's tolerances: relative for kBT, P and D, absolute for g(r)
-TOLERANCE = {"kBT": 0.01, "kBT_friction": 0.01, "P": 0.01, "g(r)": 0.01, "D": 0.02}
+# the issue's tolerances: relative for kBT, P, D and eta, absolute for g(r)
+TOLERANCE = {"kBT": 0.01, "kBT_friction": 0.01, "P": 0.01, "g(r)": 0.01, "D": 0.02, "eta": 0.02}
+
+# The viscosity under shear of each fluid and mass: the set of viscosity_shear.jsonl that
+# measures it (bench/accuracy/README.md, "Viscosity") and the set whose reference it is compared
+# with (HS at m = 0.01 and 0.001 have none of their own)
+VISCOSITY_SETS = {
+    ("GW", 0.01): ("", ""), ("GW", 0.001): ("m0.001.rate5.", "m0.001.rate5."),
+    ("GW", 0.1): ("m0.1.", "m0.1."), ("GW", 1.0): ("m1.rate0.5.tprod20.", "m1.rate0.5.tprod20."),
+    ("P", 1.0): ("P.m1.rate0.5.tprod20.", "P.m1.rate0.5.tprod20."), ("P", 0.1): ("P.m0.1.", "P.m0.1."),
+    ("P", 0.01): ("P.m0.01.", "P.m0.01."), ("P", 0.001): ("P.m0.001.rate5.", "P.m0.001.rate5."),
+    ("HS", 1.0): ("HS.m1.rate0.2.", "HS.m1.rate0.2."), ("HS", 0.1): ("HS.m0.1.rate0.2.", "HS.m0.1.rate0.2."),
+    ("HS", 0.01): ("HS.m0.01.rate0.2.", "HS.m0.1.rate0.2."),
+    ("HS", 0.001): ("HS.m0.001.rate0.2.", "HS.m0.1.rate0.2."),
+}
 OBSERVABLES = ["kBT", "kBT_friction", "P", "g(r)", "D"]
 
 
@@ -204,6 +220,46 @@ def cells(records):
     return out
 
 
+def viscosity_deviations(records):
+    """{(fluid, mass, integrator): {dt: Deviation of eta from the set's reference}} from the
+    records of viscosity_shear.jsonl (cells imp*, impv*, stock*, diag* of VISCOSITY_SETS)."""
+    runs = {}
+    for r in records:
+        runs.setdefault(r["set"], {}).setdefault(r["cell"], []).append(r)
+    out = {}
+    for (fluid, mass), (name, reference) in VISCOSITY_SETS.items():
+        ref = runs.get(reference, {}).get("ref")
+        if not ref:
+            continue
+        for cell, seeds in runs.get(name, {}).items():
+            kind = re.match(r"(impv|imp|stock|diag)(?![a-z])", cell)
+            if not kind or seeds[0].get("dt") is None:
+                continue
+            out.setdefault((fluid, mass, kind.group(1)), {})[seeds[0]["dt"]] = relative_deviation(
+                [r["eta"] for r in seeds], [r["eta"] for r in ref])
+    return out
+
+
+def _viscosity_step(dt, measured):
+    """dt, or where the viscosity under shear measured at dt is outside its tolerance (or, dt
+    not measured, at a smaller step), the largest measured step up to it within tolerance, by
+    largest_step()'s rule (a step only just outside is taken for noise, one outside by more than
+    two standard errors ends the search); None if none. With whether the viscosity moved it."""
+    if dt is None or not measured:
+        return dt, False
+    steps = sorted(d for d in measured if d <= dt)
+    tolerance = TOLERANCE["eta"]
+    if all(measured[d].within(tolerance) for d in steps):
+        return dt, False
+    best = None
+    for d in steps:
+        if measured[d].within(tolerance):
+            best = d
+        elif measured[d].beyond(tolerance):
+            break
+    return best, best != dt
+
+
 def largest_step(scan, observables):
     """The largest dt of a scan (cells of one fluid, mass, integrator) that keeps the observables
     within tolerance, with no smaller dt of the scan outside it by more than two standard errors
@@ -359,13 +415,15 @@ def _checked_step(scan, observables, dt, checked):
     return step, step in verdict
 
 
-def summary_rows(cell_list, costs=None, temperature="kBT", checked=None):
+def summary_rows(cell_list, costs=None, temperature="kBT", checked=None, viscosity=None):
     """One row per (fluid, mass, integrator): the largest step within tolerance on every
     observable, the temperature taken as `temperature` ('kBT' end of step, or 'kBT_friction'),
     what limits it, its cost per time unit where timed, and the speed-up over stock + nve.
     checked: seed_check's cells; a largest step that they find outside tolerance gives way to
     the next smaller one, and larger steps they pass are taken (row['seed_checked'] says whether
-    the step taken was re-run)."""
+    the step taken was re-run). viscosity: viscosity_deviations(); a step whose viscosity under
+    shear is outside tolerance gives way to the largest smaller step measured within it
+    (limited by "eta (shear)")."""
     observables = [temperature, "P", "g(r)", "D"]
     rows = []
     for (fluid, mass), scans in sorted(group(cell_list).items()):
@@ -381,6 +439,13 @@ def summary_rows(cell_list, costs=None, temperature="kBT", checked=None):
                     seed_limited[name] = [n + " (seeds)" for n in observables
                                           if not rejected.deviations[n].within(TOLERANCE[n])]
                 best[name] = dt
+        if viscosity is not None:
+            for name in scans:
+                dt, capped = _viscosity_step(best[name], viscosity.get((fluid, mass, name)))
+                if capped:
+                    best[name] = dt
+                    seed_limited[name] = ["eta (shear)"]
+                    seed_checked[name] = False
         cost = {}
         for name, dt in best.items():
             if costs is not None and dt is not None:
@@ -598,6 +663,8 @@ def main(argv=None):
     timings = read_jsonl(timing) if os.path.exists(timing) else []
     confirm = os.path.join(args.results, "confirm.jsonl")
     checked = seed_check(read_jsonl(confirm)) if os.path.exists(confirm) else None
+    shear = os.path.join(args.results, "viscosity_shear.jsonl")
+    viscosity = viscosity_deviations(read_jsonl(shear)) if os.path.exists(shear) else None
     if checked:
         print("## Largest steps re-run with independent seeds (results/confirm.jsonl)\n")
         print(seed_check_table(checked))
@@ -606,7 +673,7 @@ def main(argv=None):
     for ranks in sorted({r.get("ranks", 1) for r in timings} or {1}):
         costs = cost_per_time_unit(timings, ranks)
         print(f"## Largest step within tolerance on every observable (LAMMPS's temp), {ranks} rank(s)\n")
-        print(summary_table(summary_rows(cell_list, costs, "kBT", checked)))
+        print(summary_table(summary_rows(cell_list, costs, "kBT", checked, viscosity)))
         print(f"\n## Cost of a step against a stock step, {ranks} rank(s)\n")
         print(breakdown_table(timings, ranks))
         print()

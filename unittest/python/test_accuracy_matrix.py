@@ -67,6 +67,34 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertEqual(rows["imp"]["limited_by"], ["kBT"])
         self.assertAlmostEqual(rows["imp"]["step_ratio"], 4.0)
 
+    def test_viscosity_under_shear_caps_a_largest_step(self):
+        # GW m = 0.01 (set ""): imp's largest step 0.002; under shear, against the reference's
+        # eta 1.0 (two seeds 0.99, 1.01): +1.0 % at 0.001, +3.0 % at 0.002 (outside 2 %)
+        def shear(cell, dt, etas):
+            return [{"set": "", "cell": cell, "seed": k, "dt": dt, "eta": eta} for k, eta in enumerate(etas)]
+        records = shear("ref", 0.0001, [0.99, 1.01]) + shear("imp0.001", 0.001, [1.005, 1.015]) \
+            + shear("imp", 0.002, [1.025, 1.035]) + shear("stock", 0.0005, [1.0, 1.02]) \
+            + shear("ref0.00005", 0.00005, [1.0, 1.0])    # (the reference's own convergence: no row)
+        viscosity = am.viscosity_deviations(records)
+        self.assertAlmostEqual(viscosity[("GW", 0.01, "imp")][0.002].value, 0.03, places=12)
+        self.assertEqual(sorted(viscosity[("GW", 0.01, "imp")]), [0.001, 0.002])
+        self.assertEqual(sorted(k[2] for k in viscosity), ["imp", "stock"])
+        rows = {r["integrator"]: r for r in am.summary_rows(self.cells, viscosity=viscosity)}
+        self.assertEqual(rows["imp"]["dt"], 0.001)
+        self.assertEqual(rows["imp"]["limited_by"], ["eta (shear)"])
+        self.assertEqual(rows["stock"]["dt"], 0.0005)    # +1 %: kept
+        # a step just outside below passing ones is noise; one clearly outside ends the search
+        dev = am.Deviation
+        self.assertEqual(am._viscosity_step(0.03, {0.01: dev(0.0, 0.01), 0.02: dev(0.021, 0.005),
+                                                   0.03: dev(0.01, 0.005)}), (0.03, False))
+        self.assertEqual(am._viscosity_step(0.03, {0.01: dev(0.0, 0.01), 0.02: dev(0.05, 0.005),
+                                                   0.03: dev(0.01, 0.005)}), (0.01, True))
+        # a step not measured keeps its largest step unless a smaller measured one fails
+        self.assertEqual(am._viscosity_step(0.03, {0.01: dev(0.0, 0.01)}), (0.03, False))
+        self.assertEqual(am._viscosity_step(0.03, {0.01: dev(0.0, 0.01), 0.02: dev(0.03, 0.01)}),
+                         (0.01, True))
+        self.assertEqual(am._viscosity_step(0.03, {0.01: dev(0.05, 0.001)}), (None, True))
+
     def test_friction_step_temperature_criterion(self):
         rows = {r["integrator"]: r for r in am.summary_rows(self.cells, temperature="kBT_friction")}
         self.assertEqual(rows["imp"]["dt"], 0.003)
