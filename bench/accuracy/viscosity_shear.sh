@@ -112,4 +112,5 @@ done
 /usr/bin/python3 "$here/shear_table.py" --dir "$out" > /dev/null    # the summary
 # the tables of every set, written into results/viscosity_shear.md (README.md, "Viscosity")
 /usr/bin/python3 "$here/shear_table.py" --ref-from HS.m0.01.rate0.2.=HS.m0.1.rate0.2. \
-  --ref-from HS.m0.001.rate0.2.=HS.m0.1.rate0.2. > "$here/results/viscosity_shear.md"
+  --ref-from HS.m0.001.rate0.2.=HS.m0.1.rate0.2. --ref-from HS.m0.001.rate1.=HS.m0.1.rate0.2. \
+  > "$here/results/viscosity_shear.md"
