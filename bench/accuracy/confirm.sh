@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The seed check behind results/confirm.jsonl (README.md, "The largest steps again with
 # independent seeds"): the reference and each integrator's largest step of the scans once per
-# seed (11-14, 16 windows each), and the next smaller steps where the seeds rejected one. The
-# tables (python/accuracy_matrix.py) then take a largest step only where the mean over the seeds
-# is within tolerance. Usage:
+# seed (11-14, 16 windows each), and the next smaller steps where the seeds rejected one, or
+# where the viscosity under shear caps the step (viscosity_shear.sh). The tables
+# (python/accuracy_matrix.py) then take a largest step only where the mean over the seeds is
+# within tolerance. Usage:
 #   bash bench/accuracy/confirm.sh GW|P|HS [SEEDS] [MASS ...]
 #       SEEDS default "11 12 13 14" (split them over two cores, e.g. "11 12" and "13 14");
 #       masses default: GW and P 0.01 0.001 (about 25 and 90 CPU-minutes), HS 1
@@ -39,7 +40,8 @@ scan() {    # mass integrator dt: one cell once per seed, no reference
 for m in $masses; do
   case "$fluid:$m" in
   GW:1)     $C --mass 1 --ref-dt 0.001 --cell stock:0.005 diag:0.005 imp:0.03 imp:0.04 imp:0.06 \
-              shardlow:0.01 shardlow:0.02 ;;
+              shardlow:0.01 shardlow:0.02
+            scan 1 stock 0.003 ;;    # (the viscosity's cap)
   GW:0.1)
     $C --mass 0.1 --ref-dt 0.0003 --cell stock:0.007 diag:0.003 imp:0.015 imp:0.02 shardlow:0.01
     scan 0.1 stock 0.005 ;;
@@ -51,12 +53,15 @@ for m in $masses; do
       shardlow:0.0007 shardlow:0.001
     scan 0.001 impv 0.001 ;;
   GW:diag)  scan 0.01 diag 0.0005; scan 0.001 diag 0.0001 ;;    # against the references above
-  P:1)      $C --mass 1 --ref-dt 0.001 --cell stock:0.003 imp:0.08 ;;
-  P:0.1)    $C --mass 0.1 --ref-dt 0.0003 --cell stock:0.002 diag:0.003 imp:0.02 ;;
+  P:1)      $C --mass 1 --ref-dt 0.001 --cell stock:0.003 imp:0.08
+            scan 1 imp 0.04 ;;    # (the viscosity's cap)
+  P:0.1)    $C --mass 0.1 --ref-dt 0.0003 --cell stock:0.002 diag:0.003 imp:0.02
+            scan 0.1 imp 0.015 ;;    # (the viscosity's cap)
   P:0.01)
     $C --mass 0.01 --ref-dt 0.0001 --cell stock:0.0003 imp:0.005 impv:0.007
     scan 0.01 impv 0.005
-    scan 0.01 impv 0.004 ;;
+    scan 0.01 impv 0.004
+    scan 0.01 imp 0.004 ;;    # (the viscosity's cap)
   P:diag)   scan 0.01 diag 0.0005 ;;
   P:0.001)
     # against velocity-Verlet at dt = 0.00001 (the scan's reference at 0.00003 is 0.5 % high in P)

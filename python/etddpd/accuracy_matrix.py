@@ -445,7 +445,14 @@ def summary_rows(cell_list, costs=None, temperature="kBT", checked=None, viscosi
                 if capped:
                     best[name] = dt
                     seed_limited[name] = ["eta (shear)"]
-                    seed_checked[name] = False
+                    # the seeds at the capped step, where they were run: a step they reject
+                    # says so in "limited by"
+                    seeds = next((c for c in checked or [] if (c.fluid, c.mass, c.integrator, c.dt)
+                                  == (fluid, mass, name, dt)), None)
+                    seed_checked[name] = seeds is not None and seeds.passes(observables)
+                    if seeds is not None and not seeds.passes(observables):
+                        seed_limited[name] += [n + " fails (seeds)" for n in observables
+                                               if not seeds.deviations[n].within(TOLERANCE[n])]
         cost = {}
         for name, dt in best.items():
             if costs is not None and dt is not None:

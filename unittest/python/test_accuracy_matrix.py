@@ -83,6 +83,16 @@ class AccuracyMatrix(unittest.TestCase):
         self.assertEqual(rows["imp"]["dt"], 0.001)
         self.assertEqual(rows["imp"]["limited_by"], ["eta (shear)"])
         self.assertEqual(rows["stock"]["dt"], 0.0005)    # +1 %: kept
+        self.assertFalse(rows["imp"]["seed_checked"])
+        # seeds run at the capped step: kept with them (an asterisk), or named where they fail
+        ok = {n: am.Deviation(0.0, 0.001) for n in ["kBT", "P", "g(r)", "D"]}
+        hot = dict(ok, kBT=am.Deviation(0.02, 0.001))
+        for deviations, checked, limited in ((ok, True, ["eta (shear)"]),
+                                             (hot, False, ["eta (shear)", "kBT fails (seeds)"])):
+            seeds = [am.Cell("GW", 0.01, "imp", 0.001, deviations)]
+            rows = {r["integrator"]: r for r in am.summary_rows(self.cells, checked=seeds, viscosity=viscosity)}
+            self.assertEqual((rows["imp"]["dt"], rows["imp"]["seed_checked"], rows["imp"]["limited_by"]),
+                             (0.001, checked, limited))
         # a step just outside below passing ones is noise; one clearly outside ends the search
         dev = am.Deviation
         self.assertEqual(am._viscosity_step(0.03, {0.01: dev(0.0, 0.01), 0.02: dev(0.021, 0.005),
