@@ -52,14 +52,11 @@ class CellPairSearch {
       nchunks_ = std::max(1, std::min(runner ? chunks : 1, n_[2]));
       if (static_cast<int>(chunks_.size()) < nchunks_) chunks_.resize(nchunks_);
       const double cutsq = cutoff * cutoff;
-      if (nchunks_ == 1)
-        collect(chunks_[0], 0, n_[2], cutsq);
-      else
-        runner(nchunks_, [this, cutsq](int k) {
-          collect(chunks_[k], k * n_[2] / nchunks_, (k + 1) * n_[2] / nchunks_, cutsq);
-        });
+      for_each_chunk(runner, [this, cutsq](int k) {
+        collect(chunks_[k], k * n_[2] / nchunks_, (k + 1) * n_[2] / nchunks_, cutsq);
+      });
     }
-    index(x, nlocal, newton_off);
+    index(x, nlocal, newton_off, runner);
   }
 
   PairListView view() const
@@ -70,11 +67,11 @@ class CellPairSearch {
   std::size_t memory_usage() const
   {
     std::size_t found = 0;
-    for (const Found &chunk : chunks_) found += chunk.first.capacity() + chunk.second.capacity();
+    for (const Found &chunk : chunks_)
+      found += chunk.first.capacity() + chunk.second.capacity() + chunk.rows.capacity();
     return sizeof(int) *
         (ilist_.capacity() + numneigh_.capacity() + neighbors_.capacity() + start_.capacity() +
-         owned_.capacity() + sorted_.capacity() + first_.capacity() + second_.capacity() +
-         cell_of_.capacity() + found) +
+         owned_.capacity() + sorted_.capacity() + cell_of_.capacity() + found) +
         sizeof(int *) * firstneigh_.capacity() + sizeof(double) * sorted_x_.capacity();
   }
 
@@ -137,12 +134,22 @@ class CellPairSearch {
     }
   }
 
-  // The pairs one slab of cells found, before they are indexed: `found` of them, as positions
-  // in sorted_ (second is written ahead of the count)
+  // The pairs one slab of cells found: `found` of them, as positions in sorted_ (second is
+  // written ahead of the count); once indexed, the `kept` ones as atom indices, oriented, and
+  // per owned atom its count of them, then where the slab's entries of its row go
   struct Found {
-    std::vector<int> first, second;
-    std::size_t found = 0;
+    std::vector<int> first, second, rows;
+    std::size_t found = 0, kept = 0;
   };
+
+  // body(k) for each of this search's slabs: by the runner where there are several
+  template <class Body> void for_each_chunk(const ChunkRunner &runner, Body body)
+  {
+    if (nchunks_ == 1)
+      body(0);
+    else if (nchunks_ > 1)
+      runner(nchunks_, body);
+  }
 
   // Every pair within the cutoff with at least one owned atom, once: each cell of the slab
   // [z0, z1) against itself and its 13 neighbours after it (in the order z, y, x). (Cells of
@@ -202,42 +209,54 @@ class CellPairSearch {
   }
 
   // Each pair oriented (owned atom first, the lower index of two owned ones), kept or not by
-  // the newton setting, and sorted by its first atom into the list's rows (the slabs' pairs in
-  // slab order: the order one slab of all cells gives).
-  void index(const double *x, int nlocal, bool newton_off)
+  // the newton setting, and sorted by its first atom into the list's rows: each row holds the
+  // first slab's entries, then the next slab's, each in the order found (the order one slab of
+  // all cells gives).
+  void index(const double *x, int nlocal, bool newton_off, const ChunkRunner &runner)
   {
     ilist_.resize(nlocal);
     for (int i = 0; i < nlocal; i++) ilist_[i] = i;
-    numneigh_.assign(nlocal, 0);
-    std::size_t total = 0;
-    for (int k = 0; k < nchunks_; k++) total += chunks_[k].found;
-    first_.resize(total);
-    second_.resize(total);
-    std::size_t kept = 0;
-    for (int k = 0; k < nchunks_; k++) {
-      const Found &chunk = chunks_[k];
+    for_each_chunk(runner, [&](int k) {
+      Found &chunk = chunks_[k];
+      chunk.rows.assign(nlocal, 0);
+      std::size_t kept = 0;
       for (std::size_t p = 0; p < chunk.found; p++) {
         int i = sorted_[chunk.first[p]], j = sorted_[chunk.second[p]];
         if (i >= nlocal || (j < nlocal && j < i)) std::swap(i, j);
         if (j >= nlocal && !newton_off &&
             !above(x[3 * j] - x[3 * i], x[3 * j + 1] - x[3 * i + 1], x[3 * j + 2] - x[3 * i + 2]))
           continue;
-        first_[kept] = i;
-        second_[kept] = j;
+        chunk.first[kept] = i;
+        chunk.second[kept] = j;
         kept++;
-        numneigh_[i]++;
+        chunk.rows[i]++;
       }
+      chunk.kept = kept;
+    });
+    // where each row starts, and each slab's part of it
+    numneigh_.assign(nlocal, 0);
+    std::size_t offset = 0;
+    for (int i = 0; i < nlocal; i++) {
+      const std::size_t row = offset;
+      for (int k = 0; k < nchunks_; k++) {
+        const int count = chunks_[k].rows[i];
+        chunks_[k].rows[i] = static_cast<int>(offset);
+        offset += count;
+      }
+      numneigh_[i] = static_cast<int>(offset - row);
     }
-    neighbors_.resize(kept);
+    neighbors_.resize(offset);
     firstneigh_.resize(nlocal);
-    fill_.resize(nlocal);
-    int offset = 0;
+    offset = 0;
     for (int i = 0; i < nlocal; i++) {
       firstneigh_[i] = neighbors_.data() + offset;
-      fill_[i] = offset;
       offset += numneigh_[i];
     }
-    for (std::size_t p = 0; p < kept; p++) neighbors_[fill_[first_[p]]++] = second_[p];
+    for_each_chunk(runner, [&](int k) {
+      Found &chunk = chunks_[k];
+      for (std::size_t p = 0; p < chunk.kept; p++)
+        neighbors_[chunk.rows[chunk.first[p]]++] = chunk.second[p];
+    });
   }
 
   int nlocal_ = 0;
@@ -246,7 +265,6 @@ class CellPairSearch {
   std::vector<double> sorted_x_;
   std::vector<Found> chunks_;    // the pairs each slab found; nchunks_ of them this search
   int nchunks_ = 0;
-  std::vector<int> first_, second_;    // the kept pairs, oriented (atom indices)
   std::vector<int> ilist_, numneigh_, neighbors_;
   std::vector<int *> firstneigh_;
 };
