@@ -4,6 +4,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
+#include "friction_operator.h"
 #include "lammps_compat.h"
 #include "neigh_list.h"
 #include "neighbor.h"
@@ -132,11 +133,7 @@ void PartnerMap::find(LAMMPS *lmp, Fix *fix, const PairListView &list, GhostExch
 bool PartnerMap::image_velocity(LAMMPS *lmp, int ghost, double offset[3]) const
 {
   if (!(lmp->atom->mask[ghost] & lmp->domain->deform_groupbit)) return false;
-  const double *n = &image_[6 * ghost];
-  const double *rate = lmp->domain->h_rate;
-  offset[0] = n[0] * rate[0] + n[5] * rate[5] + n[4] * rate[4];
-  offset[1] = n[1] * rate[1] + n[3] * rate[3];
-  offset[2] = n[2] * rate[2];
+  image_velocity_offset(&image_[6 * ghost], lmp->domain->h_rate, offset);
   return offset[0] != 0.0 || offset[1] != 0.0 || offset[2] != 0.0;
 }
 

@@ -78,7 +78,9 @@ template <class DeviceType> class FrictionPairsKokkos {
   // atom outside it.
   template <typename Tag> bool build(const Input &in, const Tag *tag)
   {
-    if (!list_in_place_) flatten_list(in);
+    // where each listed atom's candidates start (the list's rows, end to end)
+    const int ncandidates = row_starts(in);
+    if (!list_in_place_) flatten_list(in, ncandidates);
     kk::upload(ilist_, in.ilist, in.inum);
     kk::upload(x_, in.x, 3 * in.nall);
     kk::upload(type_, in.type, in.nall);
@@ -93,24 +95,14 @@ template <class DeviceType> class FrictionPairsKokkos {
       Kokkos::deep_copy(tag_, h_tag);
     }
     const Candidates candidates = candidates_of(in);
-    // where each listed atom's candidates start (the list's rows, end to end)
-    const int ncandidates = candidate_starts(in);
-    auto candidate_start = list_in_place_ ? candidate_start_ : list_start_;
+    auto candidate_start = list_start_;
 
     // one pass over the candidates: each atom's pairs written from its first candidate's slot
     // on, how many it has, and whether one has an atom outside the group
     kk::grow(pair_start_, in.inum + 1);
-    kk::grow(staged_partner_, ncandidates);
-    kk::grow(staged_geometry_, ncandidates);
-    kk::grow(staged_noise_, ncandidates);
-    kk::grow(staged_distance_, ncandidates);
-    if (moving_images_) kk::grow(staged_offset_, 3 * ncandidates);
+    staged_.grow(ncandidates, moving_images_);
     auto pair_start = pair_start_;
-    auto partner_at = staged_partner_;
-    auto geometry_at = staged_geometry_;
-    auto noise_at = staged_noise_;
-    auto distance_at = staged_distance_;
-    auto offset_at = staged_offset_;
+    const PairArrays staged = staged_;
     const bool moving = moving_images_;
     auto image = image_;
     const int nlocal = in.nlocal, deform_groupbit = in.deform_groupbit;
@@ -131,21 +123,17 @@ template <class DeviceType> class FrictionPairsKokkos {
             const double inv_r = 1.0 / r;
             const PairDissipation dissipation =
                 pair_dissipation(candidates.coefficients(i, j), r, factor);
-            partner_at(at) = partner;
-            for (int k = 0; k < 3; k++) geometry_at(at, k) = static_cast<float>(d[k] * inv_r);
-            geometry_at(at, 3) = static_cast<float>(dissipation.friction);
-            noise_at(at) = dissipation.noise * noise.gaussian(tags(i), tags(j), step);
-            distance_at(at) = r;
+            staged.partner(at) = partner;
+            for (int k = 0; k < 3; k++) staged.geometry(at, k) = static_cast<float>(d[k] * inv_r);
+            staged.geometry(at, 3) = static_cast<float>(dissipation.friction);
+            staged.noise(at) = dissipation.noise * noise.gaussian(tags(i), tags(j), step);
+            staged.distance(at) = r;
             if (moving) {
               // (as PartnerMap::image_velocity adds it: zero for an owned atom)
               double offset[3] = {0.0, 0.0, 0.0};
-              if (j >= nlocal && (candidates.mask(j) & deform_groupbit)) {
-                const int g = 6 * (j - nlocal);
-                offset[0] = image(g) * rate[0] + image(g + 5) * rate[5] + image(g + 4) * rate[4];
-                offset[1] = image(g + 1) * rate[1] + image(g + 3) * rate[3];
-                offset[2] = image(g + 2) * rate[2];
-              }
-              for (int k = 0; k < 3; k++) offset_at(3 * at + k) = offset[k];
+              if (j >= nlocal && (candidates.mask(j) & deform_groupbit))
+                image_velocity_offset(&image(6 * (j - nlocal)), rate, offset);
+              for (int k = 0; k < 3; k++) staged.offset(3 * at + k) = offset[k];
             }
             at++;
             if (held) any_fixed = 1;
@@ -165,32 +153,18 @@ template <class DeviceType> class FrictionPairsKokkos {
         total);
     npairs_ = total;
     kk::grow(pair_i_, total);
-    kk::grow(pair_j_, total);
-    kk::grow(geometry_, total);
-    kk::grow(noise_values_, total);
-    kk::grow(distance_, total);
-    if (moving) kk::grow(offsets_, 3 * total);
-    auto offsets = offsets_;
+    packed_.grow(total, moving);
     auto pair_i = pair_i_;
-    auto pair_j = pair_j_;
-    auto geometry = geometry_;
-    auto noise_values = noise_values_;
-    auto distance = distance_;
+    const PairArrays packed = packed_;
     auto ilist = ilist_;
     // the pairs moved together, in the list's order
     Kokkos::parallel_for(
         "etd:pairs_pack", Kokkos::RangePolicy<execution_space>(0, in.inum),
         KOKKOS_LAMBDA(const int ii) {
           const int i = ilist(ii);
-          const int from = candidate_start(ii);
-          for (int to = pair_start(ii), at = from; to < pair_start(ii + 1); to++, at++) {
+          for (int to = pair_start(ii), at = candidate_start(ii); to < pair_start(ii + 1); to++, at++) {
             pair_i(to) = i;
-            pair_j(to) = partner_at(at);
-            for (int k = 0; k < 4; k++) geometry(to, k) = geometry_at(at, k);
-            noise_values(to) = noise_at(at);
-            distance(to) = distance_at(at);
-            if (moving)
-              for (int k = 0; k < 3; k++) offsets(3 * to + k) = offset_at(3 * at + k);
+            packed.copy(to, staged, at, moving);
           }
         });
     return fixed > 0;    // (Max starts from the lowest int, where no atom is listed)
@@ -198,11 +172,11 @@ template <class DeviceType> class FrictionPairsKokkos {
 
   int pairs() const { return npairs_; }
   const Indices &pair_i() const { return pair_i_; }
-  const Indices &pair_j() const { return pair_j_; }
-  const Geometry &geometry() const { return geometry_; }
-  const Values &noise() const { return noise_values_; }    // sigma w_R theta per pair
+  const Indices &pair_j() const { return packed_.partner; }
+  const Geometry &geometry() const { return packed_.geometry; }
+  const Values &noise() const { return packed_.noise; }    // sigma w_R theta per pair
   // under moving images, each pair's image velocity offset (3 values per pair), else nullptr
-  const Values *offsets() const { return moving_images_ ? &offsets_ : nullptr; }
+  const Values *offsets() const { return moving_images_ ? &packed_.offset : nullptr; }
 
   // the pairs in host memory, as FrictionPairAssembly holds them (for the virial and the split);
   // offsets: under moving images, 3 per pair (else left empty)
@@ -211,14 +185,14 @@ template <class DeviceType> class FrictionPairsKokkos {
   {
     if (offsets) {
       offsets->assign(moving_images_ ? 3 * npairs_ : 0, 0.0);
-      if (moving_images_ && npairs_ > 0) kk::download(offsets_, offsets->data(), 3 * npairs_);
+      if (moving_images_ && npairs_ > 0) kk::download(packed_.offset, offsets->data(), 3 * npairs_);
     }
     const int n = npairs_;
     auto h_i = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pair_i_);
-    auto h_j = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pair_j_);
-    auto h_geometry = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), geometry_);
-    auto h_noise = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), noise_values_);
-    auto h_distance = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), distance_);
+    auto h_j = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), packed_.partner);
+    auto h_geometry = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), packed_.geometry);
+    auto h_noise = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), packed_.noise);
+    auto h_distance = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), packed_.distance);
     pairs.resize(n);
     noise.resize(n);
     distance.resize(n);
@@ -291,6 +265,33 @@ template <class DeviceType> class FrictionPairsKokkos {
     }
   };
 
+  // Per pair: the atom or slot it pairs with (partner), its geometry (e and gamma w_D), noise
+  // sigma w_R theta, distance and, under moving images, the image's velocity offset (3 values)
+  // (public: a device lambda captures it)
+  struct PairArrays {
+    Indices partner;
+    Geometry geometry;
+    Values noise, distance, offset;
+    void grow(int n, bool moving)
+    {
+      kk::grow(partner, n);
+      kk::grow(geometry, n);
+      kk::grow(noise, n);
+      kk::grow(distance, n);
+      if (moving) kk::grow(offset, 3 * n);
+    }
+    // pair `to` of these arrays from pair `at` of `from`
+    KOKKOS_INLINE_FUNCTION void copy(int to, const PairArrays &from, int at, bool moving) const
+    {
+      partner(to) = from.partner(at);
+      for (int k = 0; k < 4; k++) geometry(to, k) = from.geometry(at, k);
+      noise(to) = from.noise(at);
+      distance(to) = from.distance(at);
+      if (moving)
+        for (int k = 0; k < 3; k++) offset(3 * to + k) = from.offset(3 * at + k);
+    }
+  };
+
  private:
   int ntypes1_ = 1, npairs_ = 0;
   bool list_in_place_ = reads_host;
@@ -298,20 +299,18 @@ template <class DeviceType> class FrictionPairsKokkos {
   Values ziggurat_;
   Table coefficients_;
   Indices present_;
-  Indices ilist_, list_start_, list_;    // the candidates in compressed rows
+  // where each listed atom's candidates start (inum + 1), and, where the kernels cannot read
+  // LAMMPS's list, the candidates in those compressed rows
+  Indices ilist_, list_start_, list_;
+  typename Indices::HostMirror list_start_host_;
   Values x_;
   Indices type_, mask_, ghost_partner_;
   Tags tag_;
-  Indices candidate_start_;    // where each listed atom's candidates start (a list read in place)
   bool moving_images_ = false;
-  Values image_, offsets_, staged_offset_;    // ghosts' image counts; per pair, offsets
-  Indices pair_start_, pair_i_, pair_j_;
-  Geometry geometry_;
-  Values noise_values_, distance_;
-  // the pairs at their atoms' candidate slots, before they are packed
-  Indices staged_partner_;
-  Geometry staged_geometry_;
-  Values staged_noise_, staged_distance_;
+  Values image_;    // the ghosts' image counts (6 each)
+  Indices pair_start_, pair_i_;
+  PairArrays packed_;    // the step's pairs, in the list's order
+  PairArrays staged_;    // the pairs at their atoms' candidate slots, before they are packed
 
   Candidates candidates_of(const Input &in) const
   {
@@ -341,31 +340,24 @@ template <class DeviceType> class FrictionPairsKokkos {
     return c;
   }
 
-  // How many candidates the listed atoms have; where the list is read in place, also where each
-  // atom's start (the compressed rows hold that already)
-  int candidate_starts(const Input &in)
+  // Where each listed atom's candidates start, end to end (list_start_ and its host copy);
+  // returns how many there are
+  int row_starts(const Input &in)
   {
-    if (!list_in_place_) {
-      int entries = 0;
-      for (int ii = 0; ii < in.inum; ii++) entries += in.numneigh[in.ilist[ii]];
-      return entries;
-    }
-    kk::grow(candidate_start_, in.inum + 1);
-    auto h_start = Kokkos::create_mirror_view(candidate_start_);
+    kk::grow(list_start_, in.inum + 1);
+    list_start_host_ = Kokkos::create_mirror_view(list_start_);
+    auto &h_start = list_start_host_;
     h_start(0) = 0;
     for (int ii = 0; ii < in.inum; ii++) h_start(ii + 1) = h_start(ii) + in.numneigh[in.ilist[ii]];
-    Kokkos::deep_copy(candidate_start_, h_start);
+    Kokkos::deep_copy(list_start_, h_start);
     return h_start(in.inum);
   }
 
-  // the list in compressed rows, in DeviceType's memory (where its kernels cannot read LAMMPS's)
-  void flatten_list(const Input &in)
+  // the list in compressed rows (row_starts' rows), in DeviceType's memory (where its kernels
+  // cannot read LAMMPS's)
+  void flatten_list(const Input &in, int entries)
   {
-    kk::grow(list_start_, in.inum + 1);
-    auto h_start = Kokkos::create_mirror_view(list_start_);
-    h_start(0) = 0;
-    for (int ii = 0; ii < in.inum; ii++) h_start(ii + 1) = h_start(ii) + in.numneigh[in.ilist[ii]];
-    const int entries = h_start(in.inum);
+    const auto &h_start = list_start_host_;
     kk::grow(list_, entries);
     auto h_list = Kokkos::create_mirror_view(list_);
     Kokkos::parallel_for(
@@ -375,7 +367,6 @@ template <class DeviceType> class FrictionPairsKokkos {
           for (int n = h_start(ii); n < h_start(ii + 1); n++)
             h_list(n) = neighbors[n - h_start(ii)];
         });
-    Kokkos::deep_copy(list_start_, h_start);
     Kokkos::deep_copy(list_, h_list);
   }
 

@@ -11,10 +11,24 @@
 #ifndef ETD_FRICTION_OPERATOR_H
 #define ETD_FRICTION_OPERATOR_H
 
+#include "host_device.h"
+
 #include <cmath>
 #include <vector>
 
 namespace etd {
+
+// The velocity a periodic image has on top of its owner's under fix deform ... remap v, as
+// LAMMPS's own ghost communication adds it (AtomVec::pack_comm_vel): counts, how many of each
+// box vector (x, y, z, yz, xz, xy) the image lies from its owner; rate, LAMMPS's h_rate. One
+// formula for the host assembly and the kernels', so both give the same offsets to the bit.
+ETD_HOST_DEVICE inline void image_velocity_offset(const double *counts, const double *rate,
+                                                  double offset[3])
+{
+  offset[0] = counts[0] * rate[0] + counts[5] * rate[5] + counts[4] * rate[4];
+  offset[1] = counts[1] * rate[1] + counts[3] * rate[3];
+  offset[2] = counts[2] * rate[2];
+}
 
 // One interacting pair, its geometry cached once per step so that every solver iteration
 // streams this compact array instead of the neighbor list.
