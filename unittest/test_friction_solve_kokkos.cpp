@@ -97,11 +97,15 @@ struct Solves {
   etd::SolverResult cpu_result, kokkos_result;
 };
 
-// both solvers on (M + h/2 G) x = b, m = 0.01, h = 0.003
-Solves solve_both(const Cluster &c, const std::vector<int> &mobile, bool with_start)
+// both solvers on (M + h/2 G) x = b, m = 0.01, h = 0.003; with zero_mass on G x = b (the
+// overdamped limit), deflated where no atom is held (G is then singular in the translation)
+Solves solve_both(const Cluster &c, const std::vector<int> &mobile, bool with_start,
+                  bool zero_mass = false)
 {
   const int n = 3 * c.natoms;
   const double h = 0.003;
+  const double mass_weight = zero_mass ? 0.0 : 1.0, friction_weight = zero_mass ? 1.0 : 0.5 * h;
+  const bool deflate = zero_mass && std::count(mobile.begin(), mobile.end(), 0) == 0;
   std::vector<double> inertia(n, 0.01), rhs, start(3 * c.partners(), 0.0);
   std::mt19937_64 gen(11);
   std::normal_distribution<double> normal;
@@ -117,8 +121,9 @@ Solves solve_both(const Cluster &c, const std::vector<int> &mobile, bool with_st
   sys.n = n;
   sys.inertia = inertia.data();
   sys.blocks = blocks.data();
-  sys.mass_weight = 1.0;
-  sys.friction_weight = 0.5 * h;
+  sys.mass_weight = mass_weight;
+  sys.friction_weight = friction_weight;
+  sys.deflate = deflate;
   auto apply = [&](const double *u, double *out, double weight) {
     operand.assign(3 * c.partners(), 0.0);
     for (int k = 0; k < n; k++) operand[k] = mobile[k / 3] ? u[k] : 0.0;
@@ -139,10 +144,10 @@ Solves solve_both(const Cluster &c, const std::vector<int> &mobile, bool with_st
   kernels.set_pairs(c.pairs, c.natoms, c.partners());
   s.kokkos.assign(n, 0.0);
   const etd::FrictionSolveKokkos<Device>::Exchange exchange = [&](double *v) { c.exchange(v); };
-  s.kokkos_result = kernels.solve(inertia.data(), mobile.data(), rhs.data(), 1.0, 0.5 * h, 1e-10,
-                                  500, exchange, serial_sum, s.kokkos.data(),
-                                  with_start ? start.data() : nullptr,
-                                  with_start ? start_friction.data() : nullptr);
+  s.kokkos_result = kernels.solve(inertia.data(), mobile.data(), rhs.data(), mass_weight,
+                                  friction_weight, 1e-10, 500, exchange, serial_sum,
+                                  s.kokkos.data(), with_start ? start.data() : nullptr,
+                                  with_start ? start_friction.data() : nullptr, deflate);
   return s;
 }
 
@@ -182,6 +187,36 @@ TEST(FrictionSolveKokkos, HeldAtomsStayAtZero)
   const Solves s = solve_both(c, mobile, true);
   expect_same(s);
   for (int a = 0; a < c.natoms; a += 5)
+    for (int k = 0; k < 3; k++) EXPECT_EQ(s.kokkos[3 * a + k], 0.0);
+}
+
+// The overdamped limit: G x = b with nothing held is singular in the uniform translation, which
+// both solvers remove; without the deflation the kernels' solution keeps b's mean drift (checked
+// by leaving it out), and the CPU solve's has none
+TEST(FrictionSolveKokkos, ZeroMassSolveIsDeflatedAsTheCpuSolve)
+{
+  const Cluster c(false);
+  const Solves s = solve_both(c, std::vector<int>(c.natoms, 1), false, true);
+  expect_same(s);
+  for (int k = 0; k < 3; k++) {
+    double mean = 0.0;
+    for (int a = 0; a < c.natoms; a++) mean += s.kokkos[3 * a + k];
+    EXPECT_NEAR(mean / c.natoms, 0.0, 1e-12);
+  }
+  // with slots (remote partners filled by the exchange) too
+  const Cluster sliced(true);
+  expect_same(solve_both(sliced, std::vector<int>(sliced.natoms, 1), false, true));
+}
+
+// and with atoms held at rest, which fix the translation: no deflation, held atoms at zero
+TEST(FrictionSolveKokkos, ZeroMassSolveWithHeldAtoms)
+{
+  const Cluster c(false);
+  std::vector<int> mobile(c.natoms, 1);
+  for (int a = 0; a < c.natoms; a += 7) mobile[a] = 0;
+  const Solves s = solve_both(c, mobile, false, true);
+  expect_same(s);
+  for (int a = 0; a < c.natoms; a += 7)
     for (int k = 0; k < 3; k++) EXPECT_EQ(s.kokkos[3 * a + k], 0.0);
 }
 

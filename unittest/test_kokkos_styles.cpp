@@ -403,25 +403,78 @@ TEST(KokkosStyles, RestartContinuesTheRun)
   }
 }
 
-// fix etd/kk scheme implicit solves on the host where its kernels do not apply, and says so
+// The zero-mass limit solves in the kernels (pairs from the host's assembly): deflated where all
+// atoms move, and with atoms held at rest (type 2 outside the group) without deflation. Both
+// solves of a step (predictor and midpoint) count; the trajectory follows the CPU fix. (A
+// perturbed fcc lattice at n = 3, each atom with twelve partners: in the random configuration
+// some atom has almost none in some direction, and one overdamped step throws it out of the skin.)
+TEST(KokkosStyles, OverdampedSolvesInTheKernels)
+{
+  for (const bool held : {false, true}) {
+    Snapshot result[2];
+    double solves = 0.0, assemblies = 0.0;
+    for (const bool kokkos : {false, true}) {
+      Lammps l(MPI_COMM_WORLD, true, kokkos ? kokkos_args() : std::vector<std::string>{});
+      l.cmds({"units lj", "atom_modify map array", "comm_modify vel yes",
+              "neigh_modify every 1 delay 0 check yes", "lattice fcc 3.0",
+              "region box block 0 4 0 4 0 4", "create_box 2 box", "create_atoms 1 box",
+              "set type 1 type/fraction 2 0.2 99", "displace_atoms all random 0.1 0.1 0.1 77",
+              "mass * 1.0", "timestep 0.001", "thermo_modify norm no",
+              "compute virial all pressure NULL virial", "pair_style dpd/gen 1.0 1.0 123",
+              "pair_coeff * * 25.0 4.5 2.0", "group mobile type 1",
+              std::string("fix integrate ") + (held ? "mobile" : "all") +
+                  " etd scheme implicit overdamped yes tol 1e-10",
+              "run 10 post no"});
+      result[kokkos] = snapshot(l);
+      if (kokkos) solves = kernel_solves(l);
+      if (kokkos) assemblies = kernel_solves(l, "kernel_assemblies");
+    }
+    EXPECT_EQ(solves, 20.0) << held;
+    EXPECT_EQ(assemblies, 0.0) << held;
+    EXPECT_LT(max_rel_diff(result[1].x, result[0].x), 1e-8) << held;
+    EXPECT_LT(max_rel_diff(result[1].v, result[0].v), 1e-8) << held;
+    double speed = 0.0;    // (the atoms moved: else the comparison would prove nothing)
+    for (const double v : result[0].v) speed = std::max(speed, std::fabs(v));
+    EXPECT_GT(speed, 0.1) << held;
+  }
+}
+
+// fix etd/kk scheme implicit solves on the host where its kernels do not apply (dpd/fpm's
+// rotation), and says so; not with dpd/gen, inertial or overdamped
 TEST(KokkosStyles, ImplicitSolveOnTheHostIsNamed)
 {
-  for (const bool overdamped : {false, true}) {
+  struct Case {
+    std::string name;
+    std::vector<std::string> setup;
+    std::string fix;
+    bool warns;
+  };
+  const std::vector<std::string> spheres = {
+      "units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
+      "region box block 0 5 0 5 0 5", "create_box 1 box", "create_atoms 1 random 375 4711 NULL",
+      "set group all mass 1.0", "pair_style dpd/fpm 1.0 1.0 8642", "pair_coeff 1 1 25 4.5 4.5 0.5",
+      "timestep 0.003"};
+  for (const Case &c : {Case{"dpd/gen", {}, "", false},
+                        Case{"dpd/gen overdamped", {}, " overdamped yes", false},
+                        Case{"dpd/fpm", spheres, "", true}}) {
     const std::string log = etdtest::work_file("kokkos_implicit_np" +
                                                std::to_string(etdtest::world_size()) + ".log");
     {
       Lammps l(MPI_COMM_WORLD, true, kokkos_args());
-      setup_box(l, 0.01, 0.0005);
-      l.cmds(GEN_S2);
-      l.cmds({"log " + log, std::string("fix integrate all etd scheme implicit") +
-                                (overdamped ? " overdamped yes" : ""),
-              "run 0 post no", "log none"});
+      if (c.setup.empty()) {
+        setup_box(l, 0.01, 0.0005);
+        l.cmds(GEN_S2);
+      } else {
+        l.cmds(c.setup);
+      }
+      l.cmds({"log " + log, "fix integrate all etd scheme implicit" + c.fix, "run 0 post no",
+              "log none"});
     }
     if (etdtest::world_rank() != 0) continue;    // (rank 0 writes the log)
     const std::string text = etdtest::read_file(log);
-    const bool warned = text.find("the friction solve runs on the host with overdamped yes") !=
-        std::string::npos;
-    EXPECT_EQ(warned, overdamped) << text;
+    const bool warned =
+        text.find("the friction solve runs on the host with dpd/fpm pairs") != std::string::npos;
+    EXPECT_EQ(warned, c.warns) << c.name << ": " << text;
   }
 }
 

@@ -43,14 +43,10 @@ template <class DeviceType> void *FixETDImplicitKokkos<DeviceType>::extract(cons
 template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::init()
 {
   FixETDImplicit::init();
-  const char *reason = options.overdamped ? "overdamped yes"
-      : dofs != 3                         ? "dpd/fpm pairs (rotation)"
-                                          : nullptr;
-  if (reason && comm->me == 0)
+  if (dofs != 3 && comm->me == 0)
     error->warning(FLERR,
-                   "Fix etd/kk scheme implicit: the friction solve runs on the host with {} (the "
-                   "CPU solver, same results)",
-                   reason);
+                   "Fix etd/kk scheme implicit: the friction solve runs on the host with dpd/fpm "
+                   "pairs (rotation) (the CPU solver, same results)");
 }
 
 template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::setup(int vflag)
@@ -146,8 +142,9 @@ etd::SolverResult FixETDImplicitKokkos<DeviceType>::solve_system(
     double friction_weight, bool deflate, const std::vector<double> *start,
     const std::vector<double> *start_friction)
 {
-  // the kernels solve the inertial translation system; the rest solves on the host
-  if (mass_weight == 0.0 || deflate || dofs != 3)
+  // the kernels solve for translation (the inertial step and the zero-mass limit); dpd/fpm's
+  // rotation solves on the host
+  if (dofs != 3)
     return FixETDImplicit::solve_system(rhs, solution, mass_weight, friction_weight, deflate,
                                         start, start_friction);
   const int nlocal = atom->nlocal;
@@ -167,7 +164,7 @@ etd::SolverResult FixETDImplicitKokkos<DeviceType>::solve_system(
   return kernels.solve(work.inertia.data(), mobile.data(), rhs.data(), mass_weight,
                        friction_weight, options.tolerance, options.max_iterations, exchange,
                        sum_over_ranks(), solution.data(), start ? start->data() : nullptr,
-                       (start && start_friction) ? start_friction->data() : nullptr);
+                       (start && start_friction) ? start_friction->data() : nullptr, deflate);
 }
 
 namespace LAMMPS_NS {

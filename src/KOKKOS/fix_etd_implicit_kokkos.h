@@ -6,7 +6,9 @@
 // momentum correction and the drifts stay on the host; at steps that tally
 // the virial or the force split the pairs are copied back to the host, where those are summed.
 // Under fix deform ... remap v the pairs carry their images' velocities. The zero-mass limit
-// (overdamped yes) and dpd/fpm's rotation solve on the host with the CPU solver.
+// (overdamped yes) solves in the kernels, deflated where G is singular, from pairs assembled on
+// the host (two solves a step, each at its own positions); dpd/fpm's rotation solves on the host
+// with the CPU solver.
 #ifndef ETD_FIX_ETD_IMPLICIT_KOKKOS_H
 #define ETD_FIX_ETD_IMPLICIT_KOKKOS_H
 

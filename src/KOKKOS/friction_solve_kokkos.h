@@ -253,17 +253,20 @@ template <class DeviceType> class FrictionSolveKokkos {
   // Solves over the 3 nowned unknowns; atoms with mobile[a] = 0, or with neither mass nor
   // friction, are held at zero. inertia, b, x: 3 nowned values; start (optional): the start
   // over the owned atoms (else the block-Jacobi solution); start_friction (optional, with
-  // start): G start, which saves one application of G. As solve_friction_system() without
-  // deflation.
+  // start): G start, which saves one application of G. deflate: the uniform translation (G's
+  // null space where nothing is held and M = 0) is removed from b, every product, every
+  // preconditioned residual and the solution. As solve_friction_system().
   SolverResult solve(const double *inertia, const int *mobile, const double *b, double mass_weight,
                      double friction_weight, double tolerance, int max_iterations,
                      const Exchange &exchange, const GlobalSum &global_sum, double *x,
-                     const double *start = nullptr, const double *start_friction = nullptr)
+                     const double *start = nullptr, const double *start_friction = nullptr,
+                     bool deflate = false)
   {
     const int n = 3 * nowned_;
     mass_weight_ = mass_weight;
     friction_weight_ = friction_weight;
     exchange_ = &exchange;
+    global_sum_ = &global_sum;
     kk::upload(inertia_, inertia, n);
     kk::upload(b_, b, n);
     kk::upload(mobile_, mobile, nowned_);
@@ -276,6 +279,8 @@ template <class DeviceType> class FrictionSolveKokkos {
     Kokkos::deep_copy(z_, 0.0);
     Kokkos::deep_copy(x_, 0.0);
     precondition_setup();
+    count_active(deflate);
+    if (deflate_ && active_[0] + active_[1] + active_[2] > 0.0) remove_mean(b_);
     start_vector(start, start_friction, n);
 
     double sums[cg_detail::NSUMS];
@@ -296,9 +301,75 @@ template <class DeviceType> class FrictionSolveKokkos {
       } ops{*this, global_sum};
       result = cg_detail::iterate(ops, global_sum, sums, tolerance, max_iterations);
     }
+    remove_mean(x_);
     kk::download(x_, x, n);
     return result;
   }
+
+  // Deflation: per component, how many unknowns are solved (not held) over all ranks (a
+  // reduction only where the solve deflates)
+  void count_active(bool deflate)
+  {
+    deflate_ = deflate;
+    for (double &count : active_) count = 0.0;
+    if (!deflate) return;
+    auto held = held_;
+    Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> counts(
+        active_, 3);
+    Kokkos::parallel_reduce(
+        "etd:deflate_count", Kokkos::RangePolicy<execution_space>(0, nowned_),
+        ComponentSums{held, held, true}, counts);
+    (*global_sum_)(active_, 3);
+  }
+
+  // The per-component mean over the solved unknowns (those not held) subtracted from them, where
+  // the solve deflates (as remove_mean in solve_friction_system())
+  void remove_mean(const Values &vector) const
+  {
+    if (!deflate_) return;
+    auto held = held_;
+    double sums[3] = {0.0, 0.0, 0.0};
+    Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> result(
+        sums, 3);
+    Kokkos::parallel_reduce(
+        "etd:deflate_sum", Kokkos::RangePolicy<execution_space>(0, nowned_),
+        ComponentSums{vector, held, false}, result);
+    (*global_sum_)(sums, 3);
+    double mean[3];
+    for (int k = 0; k < 3; k++) mean[k] = active_[k] > 0.0 ? sums[k] / active_[k] : 0.0;
+    const double m0 = mean[0], m1 = mean[1], m2 = mean[2];
+    auto values = vector;
+    Kokkos::parallel_for(
+        "etd:deflate", Kokkos::RangePolicy<execution_space>(0, nowned_),
+        KOKKOS_LAMBDA(const int a) {
+          if (held(3 * a) == 0.0) values(3 * a) -= m0;
+          if (held(3 * a + 1) == 0.0) values(3 * a + 1) -= m1;
+          if (held(3 * a + 2) == 0.0) values(3 * a + 2) -= m2;
+        });
+  }
+
+  // per component, the sum of a vector (or with count, how many) over the unknowns not held
+  struct ComponentSums {
+    using value_type = double[];
+    using size_type = int;
+    int value_count = 3;
+    Values values, held;
+    bool count;
+    ComponentSums(const Values &v, const Values &h, bool c) : values(v), held(h), count(c) {}
+    KOKKOS_INLINE_FUNCTION void init(double *sums) const
+    {
+      for (int k = 0; k < 3; k++) sums[k] = 0.0;
+    }
+    KOKKOS_INLINE_FUNCTION void join(double *sums, const double *other) const
+    {
+      for (int k = 0; k < 3; k++) sums[k] += other[k];
+    }
+    KOKKOS_INLINE_FUNCTION void operator()(const int a, double *sums) const
+    {
+      for (int k = 0; k < 3; k++)
+        if (held(3 * a + k) == 0.0) sums[k] += count ? 1.0 : values(3 * a + k);
+    }
+  };
 
   // (The kernels and their launchers are public: CUDA requires a kernel's functor type and the
   // function enclosing an extended device lambda to be.)
@@ -376,6 +447,16 @@ template <class DeviceType> class FrictionSolveKokkos {
       Kokkos::deep_copy(s_, 0.0);
       return;
     }
+    if (deflate_) {    // x and A x projected, as the CPU solve projects them
+      remove_mean(x_);
+      apply(x_, w_);
+      remove_mean(w_);
+      auto ax = w_;
+      Kokkos::parallel_for(
+          "etd:start_residual", Kokkos::RangePolicy<execution_space>(0, n),
+          KOKKOS_LAMBDA(const int k) { r(k) = held(k) == 0.0 ? b(k) - ax(k) : 0.0; });
+      return;
+    }
     fill_slots(x_);
     auto offsets = offsets_;
     auto incidence = incidence_;
@@ -389,6 +470,26 @@ template <class DeviceType> class FrictionSolveKokkos {
                      friction_weight, ax);
           for (int k = 0; k < 3; k++)
             r(3 * a + k) = held(3 * a + k) == 0.0 ? b(3 * a + k) - ax[k] : 0.0;
+        });
+  }
+
+  // out = A u over the owned atoms (u over the partners: its slots filled here)
+  void apply(Values &u, const Values &out)
+  {
+    fill_slots(u);
+    auto given = u;
+    auto offsets = offsets_;
+    auto incidence = incidence_;
+    auto other = other_;
+    auto geometry = geometry_;
+    auto inertia = inertia_;
+    const double mass_weight = mass_weight_, friction_weight = friction_weight_;
+    Kokkos::parallel_for(
+        "etd:apply", Kokkos::RangePolicy<execution_space>(0, nowned_), KOKKOS_LAMBDA(const int a) {
+          double au[3];
+          apply_atom(a, given, inertia, offsets, incidence, other, geometry, mass_weight,
+                     friction_weight, au);
+          for (int k = 0; k < 3; k++) out(3 * a + k) = au[k];
         });
   }
 
@@ -418,6 +519,7 @@ template <class DeviceType> class FrictionSolveKokkos {
           const double ra[3] = {r(3 * a), r(3 * a + 1), r(3 * a + 2)};
           block_product(a, inverse, held, ra, z);
         });
+    remove_mean(z_);
   }
 
   // p = z + beta p, s = w + beta s, x += alpha p, r -= alpha s, then z = P r for the next
@@ -446,6 +548,7 @@ template <class DeviceType> class FrictionSolveKokkos {
           }
           block_product(a, inverse, held, ra, z);
         });
+    remove_mean(z_);
   }
 
   double residual_norm2() const
@@ -468,6 +571,7 @@ template <class DeviceType> class FrictionSolveKokkos {
     Geometry geometry;
     double mass_weight, friction_weight;
     bool with_b;
+    bool applied;    // w already holds A z (projected), else A z is computed here
     KOKKOS_INLINE_FUNCTION void init(double *sums) const
     {
       for (int k = 0; k < cg_detail::NSUMS; k++) sums[k] = 0.0;
@@ -480,8 +584,11 @@ template <class DeviceType> class FrictionSolveKokkos {
     {
       using namespace cg_detail;
       double az[3];
-      apply_atom(a, z, inertia, offsets, incidence, other, geometry, mass_weight, friction_weight,
-                 az);
+      if (applied)
+        for (int k = 0; k < 3; k++) az[k] = w(3 * a + k);
+      else
+        apply_atom(a, z, inertia, offsets, incidence, other, geometry, mass_weight,
+                   friction_weight, az);
       for (int k = 0; k < 3; k++) {
         const int d = 3 * a + k;
         const double wd = held(d) == 0.0 ? az[k] : 0.0;
@@ -501,10 +608,16 @@ template <class DeviceType> class FrictionSolveKokkos {
   };
   void apply_and_reduce(bool with_b, double sums[cg_detail::NSUMS], const GlobalSum &global_sum)
   {
-    fill_slots(z_);
+    // with deflation A z is projected before the sums read it: a pass of its own
+    if (deflate_) {
+      apply(z_, w_);
+      remove_mean(w_);
+    } else {
+      fill_slots(z_);
+    }
     ApplyAndSum functor{cg_detail::NSUMS, z_, w_, r_, s_, b_, inertia_, held_, offsets_,
                         incidence_, other_, geometry_, mass_weight_, friction_weight_,
-                        with_b};
+                        with_b, deflate_};
     Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> result(
         sums, cg_detail::NSUMS);
     Kokkos::parallel_reduce("etd:apply_and_sum", Kokkos::RangePolicy<execution_space>(0, nowned_),
@@ -517,6 +630,9 @@ template <class DeviceType> class FrictionSolveKokkos {
   int nowned_ = 0, npartners_ = 0;
   double mass_weight_ = 1.0, friction_weight_ = 0.0;
   const Exchange *exchange_ = nullptr;
+  const GlobalSum *global_sum_ = nullptr;
+  bool deflate_ = false;
+  double active_[3] = {0.0, 0.0, 0.0};    // per component, the unknowns solved over all ranks
   Geometry geometry_;     // e0, e1, e2, gamma w_D per pair
   // per owned atom, its pairs, their other atoms and which end of each it is (1: i, -1: j)
   Indices offsets_, incidence_, other_, end_, cursor_;
