@@ -259,11 +259,12 @@ struct DevicePairs {
 
 }    // namespace
 
-// Pairs handed over in device memory, with the incidence built on the host (where the host
-// reads that memory) and in kernels (a GPU's path: atomics, then each atom's entries sorted back
-// to pair order): each orders every atom's sums as the host set_pairs() does, so the same
-// solution, bit for bit (with slots, and with an atom's pair with its own periodic image, whose
-// two ends are one atom)
+// Pairs handed over in device memory: applied by their runs where the kernels run on the host
+// (the runs found from the pairs' i, or given as the assembly's rows), the same solution as the
+// host set_pairs(), bit for bit; and by the incidence list built in kernels (a GPU's path:
+// atomics, then each atom's entries sorted back to pair order), the same to round-off (sums in
+// another order). With slots, and with an atom's pair with its own periodic image, whose two
+// ends are one atom.
 TEST(FrictionSolveKokkos, PairsInDeviceMemoryGiveTheSameSolve)
 {
   Cluster c(true);
@@ -278,30 +279,58 @@ TEST(FrictionSolveKokkos, PairsInDeviceMemoryGiveTheSameSolve)
   const std::vector<int> mobile(c.natoms, 1);
   const auto serial_sum = [](double *, int) {};
   const etd::FrictionSolveKokkos<Device>::Exchange exchange = [&](double *v) { c.exchange(v); };
-  std::vector<double> x[3];
-  for (int path = 0; path < 3; path++) {
+  // the rows as the assembly gives them: one per atom, in order, empty ones included
+  using Indices = etd::FrictionSolveKokkos<Device>::Indices;
+  Indices rows("rows", c.natoms), row_start("row_start", c.natoms + 1);
+  {
+    auto h_rows = Kokkos::create_mirror_view(rows);
+    auto h_start = Kokkos::create_mirror_view(row_start);
+    int p = 0;
+    for (int a = 0; a < c.natoms; a++) {
+      h_rows(a) = a;
+      h_start(a) = p;
+      while (p < int(c.pairs.size()) && c.pairs[p].i == a) p++;
+    }
+    h_start(c.natoms) = p;
+    Kokkos::deep_copy(rows, h_rows);
+    Kokkos::deep_copy(row_start, h_start);
+  }
+  std::vector<double> x[4];
+  for (int path = 0; path < 4; path++) {
     etd::FrictionSolveKokkos<Device> kernels;
     const DevicePairs pairs(c.pairs);
+    const int npairs = int(c.pairs.size());
     if (path == 1)
-      kernels.set_pairs(pairs.i, pairs.j, pairs.geometry, int(c.pairs.size()), c.natoms,
-                        c.partners());
+      kernels.set_pairs(pairs.i, pairs.j, pairs.geometry, npairs, c.natoms, c.partners());
     else if (path == 2)
-      kernels.set_pairs_in_kernels(pairs.i, pairs.j, pairs.geometry, int(c.pairs.size()),
-                                   c.natoms, c.partners());
+      kernels.set_pairs(pairs.i, pairs.j, pairs.geometry, npairs, c.natoms, c.partners(), &rows,
+                        &row_start, c.natoms);
+    else if (path == 3)
+      kernels.set_pairs_in_kernels(pairs.i, pairs.j, pairs.geometry, npairs, c.natoms,
+                                   c.partners());
     else
       kernels.set_pairs(c.pairs, c.natoms, c.partners());
     x[path].assign(n, 0.0);
     kernels.solve(inertia.data(), mobile.data(), rhs.data(), 1.0, 0.0015, 1e-10, 500, exchange,
                   serial_sum, x[path].data());
   }
-  for (int path = 1; path < 3; path++)
+  double scale = 0.0;
+  for (int k = 0; k < n; k++) scale = std::max(scale, std::fabs(x[0][k]));
+  for (int path = 1; path < 4; path++)
     for (int k = 0; k < n; k++)
-      ASSERT_EQ(x[path][k], x[0][k]) << "path " << path << ", unknown " << k;
+      if (path < 3)
+        ASSERT_EQ(x[path][k], x[0][k]) << "path " << path << ", unknown " << k;
+      else
+        ASSERT_NEAR(x[path][k], x[0][k], 1e-12 * scale) << "path " << path << ", unknown " << k;
 }
 
-// b = M v - h/2 G u + sqrt(h) sum_pairs (+-) noise e against the host's sums
-TEST(FrictionSolveKokkos, RightHandSideMatchesTheHostSums)
+// b = M v - h/2 G u + sqrt(h) sum_pairs (+-) noise e against the host's sums, applied by the
+// pairs' runs (the host's threads) and by the incidence list (a GPU's path)
+class RightHandSide : public ::testing::TestWithParam<bool> {};
+INSTANTIATE_TEST_SUITE_P(FrictionSolveKokkos, RightHandSide, ::testing::Values(false, true));
+TEST_P(RightHandSide, MatchesTheHostSums)
 {
+  const bool incidence = GetParam();
   const Cluster c(true);
   const int n = 3 * c.natoms;
   const double h = 0.004;
@@ -320,7 +349,12 @@ TEST(FrictionSolveKokkos, RightHandSideMatchesTheHostSums)
 
   etd::FrictionSolveKokkos<Device> kernels;
   const DevicePairs pairs(c.pairs);
-  kernels.set_pairs(pairs.i, pairs.j, pairs.geometry, int(c.pairs.size()), c.natoms, c.partners());
+  if (incidence)
+    kernels.set_pairs_in_kernels(pairs.i, pairs.j, pairs.geometry, int(c.pairs.size()), c.natoms,
+                                 c.partners());
+  else
+    kernels.set_pairs(pairs.i, pairs.j, pairs.geometry, int(c.pairs.size()), c.natoms,
+                      c.partners());
   etd::FrictionSolveKokkos<Device>::Values noise_view("noise", noise.size());
   auto h_noise = Kokkos::create_mirror_view(noise_view);
   for (size_t p = 0; p < noise.size(); p++) h_noise(p) = noise[p];

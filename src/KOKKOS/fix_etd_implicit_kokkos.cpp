@@ -123,7 +123,8 @@ template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::friction_rhs(
   }
   const int nlocal = atom->nlocal;
   kernels.set_pairs(pairs_kk.pair_i(), pairs_kk.pair_j(), pairs_kk.geometry(), pairs_kk.pairs(),
-                    nlocal, partners.count(nlocal));
+                    nlocal, partners.count(nlocal), &pairs_kk.rows(), &pairs_kk.row_starts(),
+                    pairs_kk.listed());
   std::vector<double> &v = work.solution;    // (scratch until the solve)
   v.resize(3 * nlocal);
   for (int i = 0; i < nlocal; i++)
@@ -156,7 +157,8 @@ etd::SolverResult FixETDImplicitKokkos<DeviceType>::solve_system(
     kernels.set_pairs(assembly.pairs(), nlocal, npartners);
   else if (pairs_on_host)
     kernels.set_pairs(pairs_kk.pair_i(), pairs_kk.pair_j(), pairs_kk.geometry(), pairs_kk.pairs(),
-                      nlocal, npartners);
+                      nlocal, npartners, &pairs_kk.rows(), &pairs_kk.row_starts(),
+                      pairs_kk.listed());
   solution.resize(3 * nlocal);
   kernel_solves += 1.0;
   const typename etd::FrictionSolveKokkos<DeviceType>::Exchange exchange =

@@ -1,7 +1,8 @@
 // ETD-DPD: fix etd/kk scheme implicit. For translation (dpd/gen pairs, inertial, no moving
 // images) the friction step runs in Kokkos kernels in DeviceType's execution space: the pairs'
 // assembly with their noise (friction_pairs_kokkos.h), the right-hand side, the block-Jacobi
-// preconditioner, G applied atom by atom and conjugate gradients (friction_solve_kokkos.h). The
+// preconditioner, G applied (pair by pair on the host's threads, atom by atom on a device) and
+// conjugate gradients (friction_solve_kokkos.h). The
 // scheme's pair search runs on the host's threads (slabs of cells at once, the same list); the
 // momentum correction and the drifts stay on the host; at steps that tally
 // the virial or the force split the pairs are copied back to the host, where those are summed.

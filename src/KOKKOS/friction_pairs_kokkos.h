@@ -152,6 +152,7 @@ template <class DeviceType> class FrictionPairsKokkos {
         },
         total);
     npairs_ = total;
+    inum_ = in.inum;
     kk::grow(pair_i_, total);
     packed_.grow(total, moving);
     auto pair_i = pair_i_;
@@ -171,6 +172,11 @@ template <class DeviceType> class FrictionPairsKokkos {
   }
 
   int pairs() const { return npairs_; }
+  // the pairs' rows: row r (of listed()) holds the pairs [row_starts(r), row_starts(r + 1)) of
+  // atom rows(r), its i
+  const Indices &rows() const { return ilist_; }
+  const Indices &row_starts() const { return pair_start_; }
+  int listed() const { return inum_; }
   const Indices &pair_i() const { return pair_i_; }
   const Indices &pair_j() const { return packed_.partner; }
   const Geometry &geometry() const { return packed_.geometry; }
@@ -293,7 +299,7 @@ template <class DeviceType> class FrictionPairsKokkos {
   };
 
  private:
-  int ntypes1_ = 1, npairs_ = 0;
+  int ntypes1_ = 1, npairs_ = 0, inum_ = 0;
   bool list_in_place_ = reads_host;
   PairNoise noise_;
   Values ziggurat_;

@@ -3,11 +3,14 @@
 // single-reduction conjugate gradients as conjugate_gradient.h, for translation (3 unknowns an
 // atom). Pure Kokkos (no LAMMPS), so a unit test compares it with the CPU solve directly.
 //
-// G is applied per owned atom over the pairs it takes part in (an incidence list built with the
-// pairs), so no two threads write one atom and every sum has a fixed order: a thread count
-// changes nothing but the reductions' rounding. Vectors over the partners (owned atoms, then
-// one slot per remote atom, implicit_partners.h) have their slots filled through the caller's
-// exchange, on the host, once per application of G (none on one rank).
+// Where the kernels run on the host (OpenMP, Serial), G is applied pair by pair, each pair once
+// as the CPU solver applies it: the pairs come in runs of one atom i (the list's rows), and each
+// thread adds its runs' shares into a copy of its own, which the next per-atom pass sums and
+// clears. On a device, G is applied per owned atom over the pairs it takes part in (an incidence
+// list built with the pairs), so no two threads write one atom. Every sum has a fixed order for
+// a given thread count. Vectors over the partners (owned atoms, then one slot per remote atom,
+// implicit_partners.h) have their slots filled through the caller's exchange, on the host, once
+// per application of G (none on one rank).
 #ifndef ETD_FRICTION_SOLVE_KOKKOS_H
 #define ETD_FRICTION_SOLVE_KOKKOS_H
 
@@ -33,8 +36,31 @@ template <class DeviceType> class FrictionSolveKokkos {
   // sums count values (at most 9) over the ranks, in place
   using GlobalSum = std::function<void(double *, int)>;
 
-  // The step's pairs (i owned, j a partner index; as FrictionPairAssembly holds them) over
-  // nowned owned atoms and npartners partners; the incidence list is built here, on the host.
+  // Each thread's copy of a sum over the pairs, width values per atom (add_pair_shares());
+  // take() sums one entry over the copies and clears it for the next sum
+  struct Shares {
+    Values copies;
+    int threads = 0;
+    std::size_t stride = 0;
+    KOKKOS_INLINE_FUNCTION double take(std::size_t at) const
+    {
+      double sum = 0.0;
+      for (int t = 0; t < threads; t++) {
+        sum += copies(t * stride + at);
+        copies(t * stride + at) = 0.0;
+      }
+      return sum;
+    }
+  };
+
+  // whether the kernels run where the host's memory is (then G is applied pair by pair)
+  static constexpr bool on_host =
+      Kokkos::SpaceAccessibility<Kokkos::DefaultHostExecutionSpace,
+                                 typename DeviceType::memory_space>::accessible;
+
+  // The step's pairs (i owned, j a partner index; as FrictionPairAssembly holds them, the pairs
+  // of one atom i together) over nowned owned atoms and npartners partners; their runs, or the
+  // incidence list, are found here, on the host.
   void set_pairs(const std::vector<FrictionPair> &pairs, int nowned, int npartners)
   {
     nowned_ = nowned;
@@ -52,13 +78,38 @@ template <class DeviceType> class FrictionSolveKokkos {
       pair_j_[p] = pair.j;
     }
     Kokkos::deep_copy(geometry_, h_geometry);
-    incidence_on_host(pair_i_.data(), pair_j_.data(), npairs, nowned);
+    if constexpr (on_host) {
+      kk::upload(partner_, pair_j_.data(), npairs);
+      runs_on_host(pair_i_.data(), npairs);
+    } else {
+      incidence_on_host(pair_i_.data(), pair_j_.data(), npairs, nowned);
+    }
+  }
+
+  // runs of consecutive pairs with the same i, from the pairs' i in host memory
+  void runs_on_host(const int *pair_i, int npairs)
+  {
+    int runs = 0;
+    for (int p = 0; p < npairs; p++)
+      if (p == 0 || pair_i[p] != pair_i[p - 1]) runs++;
+    kk::grow(run_atom_, runs);
+    kk::grow(run_start_, runs + 1);
+    int r = 0;
+    for (int p = 0; p < npairs; p++)
+      if (p == 0 || pair_i[p] != pair_i[p - 1]) {
+        run_atom_(r) = pair_i[p];
+        run_start_(r++) = p;
+      }
+    run_start_(runs) = npairs;
+    nruns_ = runs;
+    by_pairs_ = true;
   }
 
   // the incidence list from the pairs' ends in host memory, in one pass: each atom's entries in
   // pair order (the pair, the atom at its other end, and which end the atom is)
   void incidence_on_host(const int *pair_i, const int *pair_j, int npairs, int nowned)
   {
+    by_pairs_ = false;
     kk::grow(offsets_, nowned + 1);
     auto h_offsets = Kokkos::create_mirror_view(offsets_);
     for (int a = 0; a <= nowned; a++) h_offsets(a) = 0;
@@ -93,20 +144,28 @@ template <class DeviceType> class FrictionSolveKokkos {
     Kokkos::deep_copy(end_, h_end);
   }
 
-  // The step's pairs already in DeviceType's memory (friction_pairs_kokkos.h): the incidence
-  // list built in kernels, each atom's entries in pair order, as the host set_pairs() orders
-  // them. The geometry view is kept, not copied.
+  // The step's pairs already in DeviceType's memory (friction_pairs_kokkos.h), the views kept,
+  // not copied. Where the kernels run on the host, G is applied by the pairs' runs: rows
+  // (optional) gives them, row r the pairs [row_start(r), row_start(r + 1)) of atom rows(r)
+  // (else they are found from pair_i). On a device the incidence list is built in kernels, each
+  // atom's entries in pair order.
   void set_pairs(const Indices &pair_i, const Indices &pair_j, const Geometry &geometry,
-                 int npairs, int nowned, int npartners)
+                 int npairs, int nowned, int npartners, const Indices *rows = nullptr,
+                 const Indices *row_start = nullptr, int nrows = 0)
   {
-    // where the host reads the pairs, one pass there costs less than the kernels' atomics
-    // (measured with the OpenMP backend on 2 threads)
-    if constexpr (Kokkos::SpaceAccessibility<Kokkos::DefaultHostExecutionSpace,
-                                             typename DeviceType::memory_space>::accessible) {
+    if constexpr (on_host) {
       nowned_ = nowned;
       npartners_ = npartners;
       geometry_ = geometry;
-      incidence_on_host(pair_i.data(), pair_j.data(), npairs, nowned);
+      partner_ = pair_j;
+      if (rows) {
+        run_atom_ = *rows;
+        run_start_ = *row_start;
+        nruns_ = nrows;
+        by_pairs_ = true;
+      } else {
+        runs_on_host(pair_i.data(), npairs);
+      }
     } else {
       set_pairs_in_kernels(pair_i, pair_j, geometry, npairs, nowned, npartners);
     }
@@ -119,6 +178,7 @@ template <class DeviceType> class FrictionSolveKokkos {
     nowned_ = nowned;
     npartners_ = npartners;
     geometry_ = geometry;
+    by_pairs_ = false;
     kk::grow(offsets_, nowned + 1);
     Kokkos::deep_copy(offsets_, 0);
     auto offsets = offsets_;
@@ -210,6 +270,31 @@ template <class DeviceType> class FrictionSolveKokkos {
     const bool moving = image_offsets != nullptr;
     const Values offset = moving ? *image_offsets : Values();
     const double half_h = 0.5 * h, root_h = std::sqrt(h);
+    if (by_pairs_) {
+      // per pair: G u, the impulse and (moving images) the images' friction, + on i, - on j
+      const int width = moving ? 9 : 6;
+      if (moving)
+        add_pair_shares(StepShares{given, noise, offset, geometry, root_h, moving});
+      else
+        add_friction_shares<6>(given, 1.0, noise, root_h);
+      const Shares shares = shares_of(width);
+      Kokkos::parallel_for(
+          "etd:step_rhs", Kokkos::RangePolicy<execution_space>(0, nowned_),
+          KOKKOS_LAMBDA(const int a) {
+            for (int k = 0; k < 3; k++) {
+              const int d = 3 * a + k;
+              const double g = shares.take(width * a + k);
+              const double impulse = shares.take(width * a + 3 + k);
+              const double image_friction = moving ? shares.take(9 * a + 6 + k) : 0.0;
+              friction(d) = g;
+              rhs(d) = inertia_view(d) * rhs(d) - half_h * g + impulse;
+              if (moving) rhs(d) -= h * image_friction;
+            }
+          });
+      kk::download(b_, b, n);
+      if (gu) kk::download(w_, gu, n);
+      return;
+    }
     Kokkos::parallel_for(
         "etd:step_rhs", Kokkos::RangePolicy<execution_space>(0, nowned_),
         KOKKOS_LAMBDA(const int a) {
@@ -385,20 +470,28 @@ template <class DeviceType> class FrictionSolveKokkos {
     auto inverse = inverse_;
     auto held = held_;
     const double mass_weight = mass_weight_, friction_weight = friction_weight_;
+    const bool by_pairs = by_pairs_;
+    if (by_pairs)    // gamma w_D e e^T, the same on both ends
+      add_pair_shares(BlockShares{geometry});
+    const Shares shares = shares_of(6);
     Kokkos::parallel_for(
         "etd:precondition_setup", Kokkos::RangePolicy<execution_space>(0, nowned_),
         KOKKOS_LAMBDA(const int a) {
           double block[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-          for (int e = offsets(a); e < offsets(a + 1); e++) {
-            const int p = incidence(e);
-            const double g = geometry(p, 3), e0 = geometry(p, 0), e1 = geometry(p, 1),
-                         e2 = geometry(p, 2);
-            block[0] += g * e0 * e0;
-            block[1] += g * e1 * e1;
-            block[2] += g * e2 * e2;
-            block[3] += g * e0 * e1;
-            block[4] += g * e0 * e2;
-            block[5] += g * e1 * e2;
+          if (by_pairs) {
+            for (int k = 0; k < 6; k++) block[k] = shares.take(6 * a + k);
+          } else {
+            for (int e = offsets(a); e < offsets(a + 1); e++) {
+              const int p = incidence(e);
+              const double g = geometry(p, 3), e0 = geometry(p, 0), e1 = geometry(p, 1),
+                           e2 = geometry(p, 2);
+              block[0] += g * e0 * e0;
+              block[1] += g * e1 * e1;
+              block[2] += g * e2 * e2;
+              block[3] += g * e0 * e1;
+              block[4] += g * e0 * e2;
+              block[5] += g * e1 * e2;
+            }
           }
           double m[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
           if (mobile(a)) invert_block(block, mass_weight * inertia(3 * a), friction_weight, m);
@@ -447,7 +540,7 @@ template <class DeviceType> class FrictionSolveKokkos {
       Kokkos::deep_copy(s_, 0.0);
       return;
     }
-    if (deflate_) {    // x and A x projected, as the CPU solve projects them
+    if (deflate_ || by_pairs_) {    // (with deflation x and A x projected, as the CPU solve does)
       remove_mean(x_);
       apply(x_, w_);
       remove_mean(w_);
@@ -484,6 +577,16 @@ template <class DeviceType> class FrictionSolveKokkos {
     auto geometry = geometry_;
     auto inertia = inertia_;
     const double mass_weight = mass_weight_, friction_weight = friction_weight_;
+    if (by_pairs_) {
+      add_friction_shares(u, friction_weight);
+      const Shares shares = shares_of(3);
+      Kokkos::parallel_for(
+          "etd:apply", Kokkos::RangePolicy<execution_space>(0, 3 * nowned_),
+          KOKKOS_LAMBDA(const int d) {
+            out(d) = mass_weight * inertia(d) * given(d) + shares.take(d);
+          });
+      return;
+    }
     Kokkos::parallel_for(
         "etd:apply", Kokkos::RangePolicy<execution_space>(0, nowned_), KOKKOS_LAMBDA(const int a) {
           double au[3];
@@ -561,7 +664,9 @@ template <class DeviceType> class FrictionSolveKokkos {
     return sum;
   }
 
-  // w = A z (zero on held unknowns) and the iteration's sums in one pass, summed over ranks
+  // w = A z (zero on held unknowns) and the iteration's sums in one pass over the atoms, summed
+  // over ranks: A z from the incidence list, or the pairs' shares of a pass before it (by pairs),
+  // or w itself (deflated: applied and projected before it)
   struct ApplyAndSum {
     using value_type = double[];
     using size_type = int;
@@ -571,7 +676,9 @@ template <class DeviceType> class FrictionSolveKokkos {
     Geometry geometry;
     double mass_weight, friction_weight;
     bool with_b;
-    bool applied;    // w already holds A z (projected), else A z is computed here
+    bool applied;    // w already holds A z (projected)
+    bool by_pairs;   // else A z from the pairs' shares (by pairs) or the incidence list
+    Shares shares;
     KOKKOS_INLINE_FUNCTION void init(double *sums) const
     {
       for (int k = 0; k < cg_detail::NSUMS; k++) sums[k] = 0.0;
@@ -586,6 +693,9 @@ template <class DeviceType> class FrictionSolveKokkos {
       double az[3];
       if (applied)
         for (int k = 0; k < 3; k++) az[k] = w(3 * a + k);
+      else if (by_pairs)
+        for (int k = 0; k < 3; k++)
+          az[k] = mass_weight * inertia(3 * a + k) * z(3 * a + k) + shares.take(3 * a + k);
       else
         apply_atom(a, z, inertia, offsets, incidence, other, geometry, mass_weight,
                    friction_weight, az);
@@ -614,10 +724,11 @@ template <class DeviceType> class FrictionSolveKokkos {
       remove_mean(w_);
     } else {
       fill_slots(z_);
+      if (by_pairs_) add_friction_shares(z_, friction_weight_);
     }
     ApplyAndSum functor{cg_detail::NSUMS, z_, w_, r_, s_, b_, inertia_, held_, offsets_,
                         incidence_, other_, geometry_, mass_weight_, friction_weight_,
-                        with_b, deflate_};
+                        with_b, deflate_, by_pairs_, shares_of(3)};
     Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> result(
         sums, cg_detail::NSUMS);
     Kokkos::parallel_reduce("etd:apply_and_sum", Kokkos::RangePolicy<execution_space>(0, nowned_),
@@ -625,9 +736,197 @@ template <class DeviceType> class FrictionSolveKokkos {
     global_sum(sums, with_b ? cg_detail::NSUMS : cg_detail::BB);
   }
 
+  Shares shares_of(int width) const
+  {
+    return {copies_, threads_, static_cast<std::size_t>(width) * nowned_};
+  }
+
+  // The runs of thread t's block of threads blocks with about equal numbers of pairs: the first
+  // run starting at or after t npairs / threads (run_start ascends)
+  KOKKOS_INLINE_FUNCTION static int first_run(const Indices &run_start, int nruns, int t,
+                                              int threads)
+  {
+    const long target = static_cast<long>(t) * run_start(nruns) / threads;
+    int lo = 0, hi = nruns;    // the first r with run_start(r) >= target, in [0, nruns]
+    while (lo < hi) {
+      const int mid = (lo + hi) / 2;
+      if (run_start(mid) < target)
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    return lo;
+  }
+
+  // A pair's shares (add_pair_shares) under moving images: on i, G u, the impulse sqrt(h)
+  // noise e and the images' friction; on j the opposite
+  struct StepShares {
+    static constexpr int width = 9, j_sign = -1;
+    static constexpr const char *label = "etd:step_shares";
+    Values u, noise, offset;
+    Geometry geometry;
+    double root_h;
+    bool moving;
+    KOKKOS_FORCEINLINE_FUNCTION void operator()(int p, int i, int j, double *to_i) const
+    {
+      const double e[3] = {geometry(p, 0), geometry(p, 1), geometry(p, 2)};
+      const double projected = geometry(p, 3) *
+          (e[0] * (u(3 * i) - u(3 * j)) + e[1] * (u(3 * i + 1) - u(3 * j + 1)) +
+           e[2] * (u(3 * i + 2) - u(3 * j + 2)));
+      const double amount = root_h * noise(p);
+      double image = 0.0;
+      if (moving)
+        image = geometry(p, 3) *
+            (e[0] * (0.0 - offset(3 * p)) + e[1] * (0.0 - offset(3 * p + 1)) +
+             e[2] * (0.0 - offset(3 * p + 2)));
+      for (int k = 0; k < 3; k++) {
+        to_i[k] = projected * e[k];
+        to_i[3 + k] = amount * e[k];
+        to_i[6 + k] = image * e[k];
+      }
+    }
+  };
+  // the preconditioner's blocks: gamma w_D e e^T (xx yy zz xy xz yz), the same on both ends
+  struct BlockShares {
+    static constexpr int width = 6, j_sign = 1;
+    static constexpr const char *label = "etd:block_shares";
+    Geometry geometry;
+    KOKKOS_FORCEINLINE_FUNCTION void operator()(int p, int, int, double *to_i) const
+    {
+      const double g = geometry(p, 3), e0 = geometry(p, 0), e1 = geometry(p, 1),
+                   e2 = geometry(p, 2);
+      to_i[0] = g * e0 * e0;
+      to_i[1] = g * e1 * e1;
+      to_i[2] = g * e2 * e2;
+      to_i[3] = g * e0 * e1;
+      to_i[4] = g * e0 * e2;
+      to_i[5] = g * e1 * e2;
+    }
+  };
+
+  // For each run of pairs (atom i) on the host's threads, share(p, i, j, to_i) gives pair p's
+  // Share::width values on i, and j's are Share::j_sign times them: i's summed over the run and then added (the
+  // CPU solver's order), j's added where j is owned, each thread into its own copy. Every entry
+  // must be taken (Shares::take) before the next sum.
+  template <class Share> void add_pair_shares(const Share &share)
+  {
+    constexpr int Width = Share::width, JSign = Share::j_sign;
+    // one block of runs per thread (about equal numbers of pairs), block t into copy t (the
+    // same sums whichever thread runs it; no per-run token)
+    const int threads = execution_space().concurrency();
+    threads_ = threads;
+    const std::size_t stride = static_cast<std::size_t>(Width) * nowned_;
+    if (copies_.extent(0) < threads * stride)    // (zeroed, as take() leaves it)
+      copies_ = Values("etd:pair_shares", threads * stride);
+    auto copies = copies_;
+    auto run_atom = run_atom_;
+    auto run_start = run_start_;
+    auto partner = partner_;
+    const int nowned = nowned_, nruns = nruns_;
+    Kokkos::parallel_for(
+        Share::label, Kokkos::RangePolicy<execution_space>(0, threads),
+        KOKKOS_LAMBDA(const int t) {
+          double *copy = copies.data() + t * stride;
+          const int last = first_run(run_start, nruns, t + 1, threads);
+          for (int r = first_run(run_start, nruns, t, threads); r < last; r++) {
+            const int i = run_atom(r);
+            double sum[Width];
+            for (int k = 0; k < Width; k++) sum[k] = 0.0;
+            for (int p = run_start(r); p < run_start(r + 1); p++) {
+              const int j = partner(p);
+              double to_i[Width];
+              share(p, i, j, to_i);
+              for (int k = 0; k < Width; k++) sum[k] += to_i[k];
+              if (j < nowned)
+                for (int k = 0; k < Width; k++) {
+                  if (JSign > 0)
+                    copy[Width * j + k] += to_i[k];
+                  else
+                    copy[Width * j + k] -= to_i[k];
+                }
+            }
+            for (int k = 0; k < Width; k++) copy[Width * i + k] += sum[k];
+          }
+        });
+  }
+
+  // weight G u pair by pair, as accumulate_friction_by_runs() sums it (u over the partners):
+  // add_pair_shares written out, u_i and i's sum held through the run (the solve's hot loop).
+  // With the noise (Width 6), also the impulse root_h sum (+-) noise e, after G u's 3 values.
+  template <int Width = 3>
+  void add_friction_shares(const Values &u, double weight, const Values &noise = Values(),
+                           double root_h = 0.0)
+  {
+    static_assert(Width == 3 || Width == 6, "G u, or G u and the impulse");
+    const int threads = execution_space().concurrency();
+    threads_ = threads;
+    const std::size_t stride = Width * static_cast<std::size_t>(nowned_);
+    if (copies_.extent(0) < threads * stride)    // (zeroed, as take() leaves it)
+      copies_ = Values("etd:pair_shares", threads * stride);
+    auto copies = copies_;
+    auto run_atom = run_atom_;
+    auto run_start = run_start_;
+    auto partner = partner_;
+    auto geometry = geometry_;
+    const int nowned = nowned_, nruns = nruns_;
+    Kokkos::parallel_for(
+        "etd:friction_shares", Kokkos::RangePolicy<execution_space>(0, threads),
+        KOKKOS_LAMBDA(const int t) {
+          double *copy = copies.data() + t * stride;
+          const double *given = u.data();
+          const int last = first_run(run_start, nruns, t + 1, threads);
+          for (int r = first_run(run_start, nruns, t, threads); r < last; r++) {
+            const int i = run_atom(r);
+            const double ui0 = given[3 * i], ui1 = given[3 * i + 1], ui2 = given[3 * i + 2];
+            double sum0 = 0.0, sum1 = 0.0, sum2 = 0.0, kick0 = 0.0, kick1 = 0.0, kick2 = 0.0;
+            for (int p = run_start(r); p < run_start(r + 1); p++) {
+              const int j = partner(p);
+              const double e0 = geometry(p, 0), e1 = geometry(p, 1), e2 = geometry(p, 2);
+              const double projected = weight * geometry(p, 3) *
+                  (e0 * (ui0 - given[3 * j]) + e1 * (ui1 - given[3 * j + 1]) +
+                   e2 * (ui2 - given[3 * j + 2]));
+              const double f0 = projected * e0, f1 = projected * e1, f2 = projected * e2;
+              sum0 += f0;
+              sum1 += f1;
+              sum2 += f2;
+              if (j < nowned) {
+                copy[Width * j] -= f0;
+                copy[Width * j + 1] -= f1;
+                copy[Width * j + 2] -= f2;
+              }
+              if constexpr (Width == 6) {
+                const double amount = root_h * noise(p);
+                const double k0 = amount * e0, k1 = amount * e1, k2 = amount * e2;
+                kick0 += k0;
+                kick1 += k1;
+                kick2 += k2;
+                if (j < nowned) {
+                  copy[6 * j + 3] -= k0;
+                  copy[6 * j + 4] -= k1;
+                  copy[6 * j + 5] -= k2;
+                }
+              }
+            }
+            copy[Width * i] += sum0;
+            copy[Width * i + 1] += sum1;
+            copy[Width * i + 2] += sum2;
+            if constexpr (Width == 6) {
+              copy[6 * i + 3] += kick0;
+              copy[6 * i + 4] += kick1;
+              copy[6 * i + 5] += kick2;
+            }
+          }
+        });
+  }
 
  private:
   int nowned_ = 0, npartners_ = 0;
+  // by pairs: each pair's partner, and the runs (atom, first pair; nruns_ + 1 starts)
+  bool by_pairs_ = false;
+  Indices partner_, run_atom_, run_start_;
+  int nruns_ = 0;
+  Values copies_;    // each thread's copy of a sum over the pairs (Shares)
+  int threads_ = 1;
   double mass_weight_ = 1.0, friction_weight_ = 0.0;
   const Exchange *exchange_ = nullptr;
   const GlobalSum *global_sum_ = nullptr;
