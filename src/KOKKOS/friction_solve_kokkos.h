@@ -894,7 +894,7 @@ template <class DeviceType> class FrictionSolveKokkos {
                 copy[Width * j + 1] -= f1;
                 copy[Width * j + 2] -= f2;
               }
-              if constexpr (Width == 6) {
+              if (Width == 6) {    // (not if constexpr: CUDA lambdas may not first capture there)
                 const double amount = root_h * noise(p);
                 const double k0 = amount * e0, k1 = amount * e1, k2 = amount * e2;
                 kick0 += k0;
@@ -910,7 +910,7 @@ template <class DeviceType> class FrictionSolveKokkos {
             copy[Width * i] += sum0;
             copy[Width * i + 1] += sum1;
             copy[Width * i + 2] += sum2;
-            if constexpr (Width == 6) {
+            if (Width == 6) {
               copy[6 * i + 3] += kick0;
               copy[6 * i + 4] += kick1;
               copy[6 * i + 5] += kick2;
