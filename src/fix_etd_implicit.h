@@ -158,6 +158,9 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator, public etd
   virtual void friction_rhs();    // work.step_rhs, work.gu_rhs and work.impulse from work.u
   void conserve_momentum_and_measure();
   void overdamped_step();
+  virtual void overdamped_impulse(std::vector<double> &impulse);
+  virtual const std::vector<double> &fixed_friction(const std::vector<double> &u,
+                                                    std::vector<double> &gu);
   bool overdamped_solve(const std::vector<double> &impulse, std::vector<double> &velocity,
                         bool singular_ok);
   void overdamped_split(const std::vector<double> &velocity, const std::vector<double> &impulse);

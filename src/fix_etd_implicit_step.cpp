@@ -235,8 +235,7 @@ bool FixETDImplicit::overdamped_solve(const std::vector<double> &impulse,
   for (int i = 0; i < nlocal; i++)
     if (!(mask[i] & groupbit))
       for (int k = 0; k < 3; k++) u[3 * i + k] = v[i][k];
-  apply_friction(u.data(), gu, false);
-  const std::vector<double> &image_friction = assembly.image_friction();
+  const std::vector<double> &image_friction = fixed_friction(u, gu);
   for (int i = 0; i < nlocal; i++)
     for (int k = 0; k < 3; k++) {
       rhs[3 * i + k] = f[i][k] + impulse[3 * i + k] - gu[3 * i + k];
@@ -267,8 +266,7 @@ void FixETDImplicit::overdamped_step()
   build_pairs();
   std::vector<double> &impulse = work.impulse, &predicted = work.predicted,
                       &solution = work.solution;
-  assembly.random_impulse(1.0 / std::sqrt(h), impulse, nlocal);
-  impulse.resize(3 * nlocal);    // owned atoms' share, kept for the corrector
+  overdamped_impulse(impulse);    // kept for the corrector
   overdamped_solve(impulse, predicted, false);
   if (!options.midpoint) {    // the single-solve (Euler-Maruyama) update, for comparison
     for (int i = 0; i < nlocal; i++)
@@ -298,6 +296,22 @@ void FixETDImplicit::overdamped_step()
         v[i][k] = solution[3 * i + k];
       }
   if (split_requested || virial_this_step) overdamped_split(solution, impulse);
+}
+
+// B xi / sqrt(h) of this step's pairs, over the owned atoms
+void FixETDImplicit::overdamped_impulse(std::vector<double> &impulse)
+{
+  assembly.random_impulse(1.0 / std::sqrt(dt), impulse, atom->nlocal);
+  impulse.resize(3 * atom->nlocal);
+}
+
+// gu = G u over the owned atoms (u: owned atoms, at rest in the group); returns the images'
+// friction G_offset under fix deform ... remap v (else empty)
+const std::vector<double> &FixETDImplicit::fixed_friction(const std::vector<double> &u,
+                                                          std::vector<double> &gu)
+{
+  apply_friction(u.data(), gu, false);
+  return assembly.image_friction();
 }
 
 // D = -G v with G of the last solve (atoms outside the group at their own velocity), R = the

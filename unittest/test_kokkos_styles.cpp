@@ -403,14 +403,21 @@ TEST(KokkosStyles, RestartContinuesTheRun)
   }
 }
 
-// The zero-mass limit solves in the kernels (pairs from the host's assembly): deflated where all
-// atoms move, and with atoms held at rest (type 2 outside the group) without deflation. Both
-// solves of a step (predictor and midpoint) count; the trajectory follows the CPU fix. (A
+// The zero-mass limit runs in the kernels: both assemblies and solves of a step (predictor and
+// midpoint) count, the solve deflated where all atoms move, and with atoms held at rest (type 2
+// outside the group, whose friction on the group the kernels sum) without deflation; the
+// trajectory follows the CPU fix. With a compute dpd/split every step copies the pairs back to
+// the host, which sums the impulse and the split there. (A
 // perturbed fcc lattice at n = 3, each atom with twelve partners: in the random configuration
 // some atom has almost none in some direction, and one overdamped step throws it out of the skin.)
 TEST(KokkosStyles, OverdampedSolvesInTheKernels)
 {
-  for (const bool held : {false, true}) {
+  struct Case {
+    bool held, split, sheared;
+  };
+  for (const auto &[held, split, sheared] :
+       {Case{false, false, false}, Case{true, false, false}, Case{true, true, false},
+        Case{false, false, true}}) {
     Snapshot result[2];
     double solves = 0.0, assemblies = 0.0;
     for (const bool kokkos : {false, true}) {
@@ -422,20 +429,28 @@ TEST(KokkosStyles, OverdampedSolvesInTheKernels)
               "mass * 1.0", "timestep 0.001", "thermo_modify norm no",
               "compute virial all pressure NULL virial", "pair_style dpd/gen 1.0 1.0 123",
               "pair_coeff * * 25.0 4.5 2.0", "group mobile type 1",
+              "velocity all create 1.0 5 loop geom",    // (atoms outside the group keep theirs)
               std::string("fix integrate ") + (held ? "mobile" : "all") +
                   " etd scheme implicit overdamped yes tol 1e-10",
-              "run 10 post no"});
+              split ? "compute split all dpd/split" : "variable none equal 0"});
+      // (a sheared box: the images' velocities, whose friction the kernels sum)
+      if (sheared)
+        l.cmds({"change_box all triclinic", "fix shear all deform 1 xy erate 0.5 remap v"});
+      l.cmd("run 10 post no");
       result[kokkos] = snapshot(l);
       if (kokkos) solves = kernel_solves(l);
       if (kokkos) assemblies = kernel_solves(l, "kernel_assemblies");
     }
-    EXPECT_EQ(solves, 20.0) << held;
-    EXPECT_EQ(assemblies, 0.0) << held;
-    EXPECT_LT(max_rel_diff(result[1].x, result[0].x), 1e-8) << held;
-    EXPECT_LT(max_rel_diff(result[1].v, result[0].v), 1e-8) << held;
+    const std::string name = std::string(held ? "held" : "all") + (split ? ", split" : "") +
+        (sheared ? ", sheared" : "");
+    EXPECT_EQ(solves, 20.0) << name;
+    EXPECT_EQ(assemblies, 20.0) << name;
+    EXPECT_LT(max_rel_diff(result[1].x, result[0].x), 1e-8) << name;
+    EXPECT_LT(max_rel_diff(result[1].v, result[0].v), 1e-8) << name;
+    EXPECT_LT(max_rel_diff(result[1].virial, result[0].virial), 1e-6) << name;
     double speed = 0.0;    // (the atoms moved: else the comparison would prove nothing)
     for (const double v : result[0].v) speed = std::max(speed, std::fabs(v));
-    EXPECT_GT(speed, 0.1) << held;
+    EXPECT_GT(speed, 0.1) << name;
   }
 }
 

@@ -8,6 +8,7 @@
 #include "force.h"
 #include "neighbor.h"
 
+#include <cmath>
 #include <cstring>
 #include <functional>
 
@@ -66,14 +67,28 @@ template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::setup(int vfl
 // the kernels assemble dpd/gen-type pairs for the inertial scheme
 template <class DeviceType> bool FixETDImplicitKokkos<DeviceType>::assembles_in_kernels() const
 {
-  return !options.overdamped && dofs == 3 && !assembly.has_fpm_pairs();
+  return dofs == 3 && !assembly.has_fpm_pairs();
+}
+
+// this assembly's pairs into the solve's kernels, once: the kernels' own, else the host's
+template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::hand_pairs_to_kernels()
+{
+  if (pairs_handed) return;
+  const int nlocal = atom->nlocal;
+  if (pairs_on_device)
+    kernels.set_pairs(pairs_kk.pair_i(), pairs_kk.pair_j(), pairs_kk.geometry(), pairs_kk.pairs(),
+                      nlocal, partners.count(nlocal), &pairs_kk.rows(), &pairs_kk.row_starts(),
+                      pairs_kk.listed());
+  else
+    kernels.set_pairs(assembly.pairs(), nlocal, partners.count(nlocal));
+  pairs_handed = true;
 }
 
 template <class DeviceType>
 bool FixETDImplicitKokkos<DeviceType>::assemble_pairs(
     const etd::FrictionPairAssembly::Context &context)
 {
-  pairs_on_device = pairs_on_host = false;
+  pairs_on_device = pairs_on_host = pairs_handed = false;
   if (!assembles_in_kernels()) return FixETDImplicit::assemble_pairs(context);
   typename etd::FrictionPairsKokkos<DeviceType>::Input in;
   in.nlocal = atom->nlocal;
@@ -117,14 +132,12 @@ bool FixETDImplicitKokkos<DeviceType>::assemble_pairs(
 
 template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::friction_rhs()
 {
-  if (!pairs_on_device || pairs_on_host) {
+  if (!terms_in_kernels()) {
     FixETDImplicit::friction_rhs();
     return;
   }
   const int nlocal = atom->nlocal;
-  kernels.set_pairs(pairs_kk.pair_i(), pairs_kk.pair_j(), pairs_kk.geometry(), pairs_kk.pairs(),
-                    nlocal, partners.count(nlocal), &pairs_kk.rows(), &pairs_kk.row_starts(),
-                    pairs_kk.listed());
+  hand_pairs_to_kernels();
   std::vector<double> &v = work.solution;    // (scratch until the solve)
   v.resize(3 * nlocal);
   for (int i = 0; i < nlocal; i++)
@@ -135,6 +148,43 @@ template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::friction_rhs(
   kernels.step_rhs(work.inertia.data(), v.data(), work.u.data(), pairs_kk.noise(), dt,
                    work.step_rhs.data(), options.warm_start ? work.gu_rhs.data() : nullptr,
                    pairs_kk.offsets());
+}
+
+// the overdamped step's B xi / sqrt(h), from the kernels' pairs
+template <class DeviceType>
+void FixETDImplicitKokkos<DeviceType>::overdamped_impulse(std::vector<double> &impulse)
+{
+  if (!terms_in_kernels()) {
+    FixETDImplicit::overdamped_impulse(impulse);
+    return;
+  }
+  hand_pairs_to_kernels();
+  const int nlocal = atom->nlocal;
+  zero_u.assign(3 * partners.count(nlocal), 0.0);
+  impulse.resize(3 * nlocal);
+  unused.resize(3 * nlocal);
+  kernels.friction_terms(zero_u.data(), pairs_kk.noise(), 1.0 / std::sqrt(dt), unused.data(),
+                         impulse.data(), nullptr);
+}
+
+// G u of the atoms outside the group (at rest in it), and the images' friction, from the
+// kernels' pairs
+template <class DeviceType>
+const std::vector<double> &
+FixETDImplicitKokkos<DeviceType>::fixed_friction(const std::vector<double> &u,
+                                                 std::vector<double> &gu)
+{
+  if (!terms_in_kernels()) return FixETDImplicit::fixed_friction(u, gu);
+  hand_pairs_to_kernels();
+  const int nlocal = atom->nlocal;
+  gather_operand(u.data(), false);    // u on all partners
+  gu.resize(3 * nlocal);
+  unused.resize(3 * nlocal);
+  const etd::kk::Values<DeviceType> *offsets = pairs_kk.offsets();
+  image_friction.assign(offsets ? 3 * nlocal : 0, 0.0);
+  kernels.friction_terms(operand.data(), pairs_kk.noise(), 0.0, gu.data(), unused.data(),
+                         offsets ? image_friction.data() : nullptr, offsets);
+  return image_friction;
 }
 
 template <class DeviceType>
@@ -149,16 +199,9 @@ etd::SolverResult FixETDImplicitKokkos<DeviceType>::solve_system(
     return FixETDImplicit::solve_system(rhs, solution, mass_weight, friction_weight, deflate,
                                         start, start_friction);
   const int nlocal = atom->nlocal;
-  const int npartners = partners.count(nlocal);
   mobile.resize(nlocal);
   for (int i = 0; i < nlocal; i++) mobile[i] = (atom->mask[i] & groupbit) ? 1 : 0;
-  // (the kernels' pairs are in place where the right-hand side was summed there)
-  if (!pairs_on_device)
-    kernels.set_pairs(assembly.pairs(), nlocal, npartners);
-  else if (pairs_on_host)
-    kernels.set_pairs(pairs_kk.pair_i(), pairs_kk.pair_j(), pairs_kk.geometry(), pairs_kk.pairs(),
-                      nlocal, npartners, &pairs_kk.rows(), &pairs_kk.row_starts(),
-                      pairs_kk.listed());
+  hand_pairs_to_kernels();
   solution.resize(3 * nlocal);
   kernel_solves += 1.0;
   const typename etd::FrictionSolveKokkos<DeviceType>::Exchange exchange =

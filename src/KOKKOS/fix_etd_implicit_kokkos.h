@@ -7,9 +7,9 @@
 // momentum correction and the drifts stay on the host; at steps that tally
 // the virial or the force split the pairs are copied back to the host, where those are summed.
 // Under fix deform ... remap v the pairs carry their images' velocities. The zero-mass limit
-// (overdamped yes) solves in the kernels, deflated where G is singular, from pairs assembled on
-// the host (two solves a step, each at its own positions); dpd/fpm's rotation solves on the host
-// with the CPU solver.
+// (overdamped yes) runs in the same kernels (two assemblies and solves a step, each at its own
+// positions; the solve deflated where G is singular), with its impulse and the friction of atoms
+// outside the group from them; dpd/fpm's rotation solves on the host with the CPU solver.
 #ifndef ETD_FIX_ETD_IMPLICIT_KOKKOS_H
 #define ETD_FIX_ETD_IMPLICIT_KOKKOS_H
 
@@ -33,6 +33,9 @@ template <class DeviceType> class FixETDImplicitKokkos : public FixETDImplicit {
  protected:
   bool assemble_pairs(const etd::FrictionPairAssembly::Context &context) override;
   void friction_rhs() override;
+  void overdamped_impulse(std::vector<double> &impulse) override;
+  const std::vector<double> &fixed_friction(const std::vector<double> &u,
+                                            std::vector<double> &gu) override;
   etd::SolverResult solve_system(const std::vector<double> &rhs, std::vector<double> &solution,
                                  double mass_weight, double friction_weight, bool deflate,
                                  const std::vector<double> *start,
@@ -44,6 +47,11 @@ template <class DeviceType> class FixETDImplicitKokkos : public FixETDImplicit {
   std::vector<int> mobile;    // per owned atom: in the group
   bool pairs_on_device = false;    // this step's pairs: assembled in the kernels (else the host)
   bool pairs_on_host = false;      // and copied back to the assembly
+  bool pairs_handed = false;       // and handed to the solve's kernels (hand_pairs_to_kernels)
+  void hand_pairs_to_kernels();
+  // the kernels' pairs are this step's, their terms summed there (else the host sums them)
+  bool terms_in_kernels() const { return pairs_on_device && !pairs_on_host; }
+  std::vector<double> zero_u, unused, image_friction;    // fixed_friction()'s and its scratch
   double kernel_solves = 0.0, kernel_assemblies = 0.0;
   bool assembles_in_kernels() const;
 };

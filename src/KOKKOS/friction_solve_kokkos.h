@@ -257,7 +257,49 @@ template <class DeviceType> class FrictionSolveKokkos {
     kk::upload(inertia_, inertia, n);
     kk::upload(b_, v, n);    // b_ holds v until it is overwritten with b
     kk::upload(x_, u, 3 * npartners_);
+    const bool moving = image_offsets != nullptr;
+    pair_terms(noise, std::sqrt(h), image_offsets);
+    auto inertia_view = inertia_;
+    auto rhs = b_;
+    auto friction = w_;
+    auto kick = kick_;
+    auto image = image_;
+    const double half_h = 0.5 * h;
+    Kokkos::parallel_for(
+        "etd:step_rhs", Kokkos::RangePolicy<execution_space>(0, n), KOKKOS_LAMBDA(const int d) {
+          rhs(d) = inertia_view(d) * rhs(d) - half_h * friction(d) + kick(d);
+          if (moving) rhs(d) -= h * image(d);
+        });
+    kk::download(b_, b, n);
+    if (gu) kk::download(w_, gu, n);
+  }
+
+  // The overdamped step's terms over the owned atoms, into host arrays of 3 nowned values: gu =
+  // G u (u given on all partners), kick = root sum_pairs (+-) noise e and, under moving images
+  // (image_offsets), image = G_offset, the friction of the images' velocities (else untouched)
+  void friction_terms(const double *u, const Values &noise, double root, double *gu,
+                      double *kick, double *image, const Values *image_offsets = nullptr)
+  {
+    const int n = 3 * nowned_;
+    kk::upload(x_, u, 3 * npartners_);
+    pair_terms(noise, root, image_offsets);
+    kk::download(w_, gu, n);
+    kk::download(kick_, kick, n);
+    if (image_offsets) kk::download(image_, image, n);
+  }
+
+  // Per owned atom from u in x_ (on all partners): w_ = G u, kick_ = root sum_pairs (+-) noise e
+  // (+ on the pair's i, - on its j; noise: sigma w_R theta per pair) and, under moving images
+  // (image_offsets: 3 per pair, the velocity of the pair's ghost image on top of its owner's),
+  // image_ = G_offset, gamma w_D (e . (0 - offset)) e summed in pair order (as
+  // FrictionPairAssembly::build() sums it)
+  void pair_terms(const Values &noise, double root, const Values *image_offsets)
+  {
+    const int n = 3 * nowned_;
     kk::grow(w_, n);
+    kk::grow(kick_, n);
+    const bool moving = image_offsets != nullptr;
+    if (moving) kk::grow(image_, n);
     auto offsets = offsets_;
     auto incidence = incidence_;
     auto other = other_;
@@ -265,50 +307,42 @@ template <class DeviceType> class FrictionSolveKokkos {
     auto geometry = geometry_;
     auto inertia_view = inertia_;
     auto given = x_;
-    auto rhs = b_;
     auto friction = w_;
-    const bool moving = image_offsets != nullptr;
+    auto kick = kick_;
+    auto image = image_;
     const Values offset = moving ? *image_offsets : Values();
-    const double half_h = 0.5 * h, root_h = std::sqrt(h);
     if (by_pairs_) {
       // per pair: G u, the impulse and (moving images) the images' friction, + on i, - on j
       const int width = moving ? 9 : 6;
       if (moving)
-        add_pair_shares(StepShares{given, noise, offset, geometry, root_h, moving});
+        add_pair_shares(StepShares{given, noise, offset, geometry, root, moving});
       else
-        add_friction_shares<6>(given, 1.0, noise, root_h);
+        add_friction_shares<6>(given, 1.0, noise, root);
       const Shares shares = shares_of(width);
       Kokkos::parallel_for(
-          "etd:step_rhs", Kokkos::RangePolicy<execution_space>(0, nowned_),
+          "etd:pair_terms", Kokkos::RangePolicy<execution_space>(0, nowned_),
           KOKKOS_LAMBDA(const int a) {
             for (int k = 0; k < 3; k++) {
               const int d = 3 * a + k;
-              const double g = shares.take(width * a + k);
-              const double impulse = shares.take(width * a + 3 + k);
-              const double image_friction = moving ? shares.take(9 * a + 6 + k) : 0.0;
-              friction(d) = g;
-              rhs(d) = inertia_view(d) * rhs(d) - half_h * g + impulse;
-              if (moving) rhs(d) -= h * image_friction;
+              friction(d) = shares.take(width * a + k);
+              kick(d) = shares.take(width * a + 3 + k);
+              if (moving) image(d) = shares.take(9 * a + 6 + k);
             }
           });
-      kk::download(b_, b, n);
-      if (gu) kk::download(w_, gu, n);
       return;
     }
     Kokkos::parallel_for(
-        "etd:step_rhs", Kokkos::RangePolicy<execution_space>(0, nowned_),
+        "etd:pair_terms", Kokkos::RangePolicy<execution_space>(0, nowned_),
         KOKKOS_LAMBDA(const int a) {
           double g[3];
           apply_atom(a, given, inertia_view, offsets, incidence, other, geometry, 0.0, 1.0, g);
           double impulse[3] = {0.0, 0.0, 0.0};
           for (int e = offsets(a); e < offsets(a + 1); e++) {
             const int p = incidence(e);
-            const double amount = root_h * noise(p);
+            const double amount = root * noise(p);
             for (int k = 0; k < 3; k++)
               impulse[k] += end(e) > 0 ? amount * geometry(p, k) : -(amount * geometry(p, k));
           }
-          // moving images: G's constant part, gamma w_D (e . (0 - offset)) e on the pair, in
-          // pair order (as FrictionPairAssembly::build() sums it)
           double image_friction[3] = {0.0, 0.0, 0.0};
           if (moving)
             for (int e = offsets(a); e < offsets(a + 1); e++) {
@@ -327,12 +361,10 @@ template <class DeviceType> class FrictionSolveKokkos {
           for (int k = 0; k < 3; k++) {
             const int d = 3 * a + k;
             friction(d) = g[k];
-            rhs(d) = inertia_view(d) * rhs(d) - half_h * g[k] + impulse[k];
-            if (moving) rhs(d) -= h * image_friction[k];
+            kick(d) = impulse[k];
+            if (moving) image(d) = image_friction[k];
           }
         });
-    kk::download(b_, b, n);
-    if (gu) kk::download(w_, gu, n);
   }
 
   // Solves over the 3 nowned unknowns; atoms with mobile[a] = 0, or with neither mass nor
@@ -939,6 +971,7 @@ template <class DeviceType> class FrictionSolveKokkos {
   Indices mobile_;
   Values inertia_, b_, inverse_, held_;    // held_: 1 on unknowns held at their start
   Values r_, z_, p_, w_, s_, x_;           // z_ and x_ over the partners: G acts on them
+  Values kick_, image_;                    // pair_terms(): the impulse, the images' friction
 
 
   // a partner vector's slots from their owners (through the host); every rank calls it, with
