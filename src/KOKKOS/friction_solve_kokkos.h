@@ -1,20 +1,22 @@
 // ETD-DPD: the implicit scheme's friction solve, (mass_weight M + friction_weight G) x = b, in
-// Kokkos kernels: the block-Jacobi preconditioner, G applied atom by atom, and the same
-// single-reduction conjugate gradients as conjugate_gradient.h, for translation (3 unknowns an
-// atom). Pure Kokkos (no LAMMPS), so a unit test compares it with the CPU solve directly.
+// Kokkos kernels: the block-Jacobi preconditioner, G applied, and the same single-reduction
+// conjugate gradients as conjugate_gradient.h, for translation (3 unknowns an atom); with the
+// step's right-hand sides. Pure Kokkos (no LAMMPS), so a unit test compares it with the CPU solve
+// directly.
 //
 // Where the kernels run on the host (OpenMP, Serial), G is applied pair by pair, each pair once
-// as the CPU solver applies it: the pairs come in runs of one atom i (the list's rows), and each
-// thread adds its runs' shares into a copy of its own, which the next per-atom pass sums and
-// clears. On a device, G is applied per owned atom over the pairs it takes part in (an incidence
-// list built with the pairs), so no two threads write one atom. Every sum has a fixed order for
-// a given thread count. Vectors over the partners (owned atoms, then one slot per remote atom,
-// implicit_partners.h) have their slots filled through the caller's exchange, on the host, once
-// per application of G (none on one rank).
+// as the CPU solver applies it, each thread into a copy of its own (friction_pair_sums_kokkos.h).
+// On a device, G is applied per owned atom over the pairs it takes part in (an incidence list
+// built with the pairs, friction_incidence_kokkos.h), so no two threads write one atom. Every
+// sum has a fixed order for a given thread count. Vectors over the partners (owned atoms, then
+// one slot per remote atom, implicit_partners.h) have their slots filled through the caller's
+// exchange, on the host, once per application of G (none on one rank).
 #ifndef ETD_FRICTION_SOLVE_KOKKOS_H
 #define ETD_FRICTION_SOLVE_KOKKOS_H
 
+#include "friction_incidence_kokkos.h"
 #include "friction_operator.h"
+#include "friction_pair_sums_kokkos.h"
 #include "friction_solve.h"
 #include "kokkos_views.h"
 
@@ -35,23 +37,9 @@ template <class DeviceType> class FrictionSolveKokkos {
   using Exchange = std::function<void(double *)>;
   // sums count values (at most 9) over the ranks, in place
   using GlobalSum = std::function<void(double *, int)>;
-
-  // Each thread's copy of a sum over the pairs, width values per atom (add_pair_shares());
-  // take() sums one entry over the copies and clears it for the next sum
-  struct Shares {
-    Values copies;
-    int threads = 0;
-    std::size_t stride = 0;
-    KOKKOS_INLINE_FUNCTION double take(std::size_t at) const
-    {
-      double sum = 0.0;
-      for (int t = 0; t < threads; t++) {
-        sum += copies(t * stride + at);
-        copies(t * stride + at) = 0.0;
-      }
-      return sum;
-    }
-  };
+  using PairSums = PairSumsKokkos<DeviceType>;
+  using Shares = typename PairSums::Shares;
+  using Incidence = FrictionIncidenceKokkos<DeviceType>;
 
   // whether the kernels run where the host's memory is (then G is applied pair by pair)
   static constexpr bool on_host =
@@ -78,70 +66,13 @@ template <class DeviceType> class FrictionSolveKokkos {
       pair_j_[p] = pair.j;
     }
     Kokkos::deep_copy(geometry_, h_geometry);
+    by_pairs_ = on_host;
     if constexpr (on_host) {
       kk::upload(partner_, pair_j_.data(), npairs);
-      runs_on_host(pair_i_.data(), npairs);
+      sums_.find_runs(partner_, pair_i_.data(), npairs);
     } else {
-      incidence_on_host(pair_i_.data(), pair_j_.data(), npairs, nowned);
+      incidence_.build_on_host(pair_i_.data(), pair_j_.data(), npairs, nowned);
     }
-  }
-
-  // runs of consecutive pairs with the same i, from the pairs' i in host memory
-  void runs_on_host(const int *pair_i, int npairs)
-  {
-    int runs = 0;
-    for (int p = 0; p < npairs; p++)
-      if (p == 0 || pair_i[p] != pair_i[p - 1]) runs++;
-    kk::grow(run_atom_, runs);
-    kk::grow(run_start_, runs + 1);
-    int r = 0;
-    for (int p = 0; p < npairs; p++)
-      if (p == 0 || pair_i[p] != pair_i[p - 1]) {
-        run_atom_(r) = pair_i[p];
-        run_start_(r++) = p;
-      }
-    run_start_(runs) = npairs;
-    nruns_ = runs;
-    by_pairs_ = true;
-  }
-
-  // the incidence list from the pairs' ends in host memory, in one pass: each atom's entries in
-  // pair order (the pair, the atom at its other end, and which end the atom is)
-  void incidence_on_host(const int *pair_i, const int *pair_j, int npairs, int nowned)
-  {
-    by_pairs_ = false;
-    kk::grow(offsets_, nowned + 1);
-    auto h_offsets = Kokkos::create_mirror_view(offsets_);
-    for (int a = 0; a <= nowned; a++) h_offsets(a) = 0;
-    for (int p = 0; p < npairs; p++) {
-      h_offsets(pair_i[p] + 1)++;
-      if (pair_j[p] < nowned) h_offsets(pair_j[p] + 1)++;
-    }
-    for (int a = 0; a < nowned; a++) h_offsets(a + 1) += h_offsets(a);
-    const int entries = h_offsets(nowned);
-    kk::grow(incidence_, entries);
-    kk::grow(other_, entries);
-    kk::grow(end_, entries);
-    auto h_incidence = Kokkos::create_mirror_view(incidence_);
-    auto h_other = Kokkos::create_mirror_view(other_);
-    auto h_end = Kokkos::create_mirror_view(end_);
-    fill_.assign(h_offsets.data(), h_offsets.data() + nowned);
-    for (int p = 0; p < npairs; p++) {
-      const int at_i = fill_[pair_i[p]]++;
-      h_incidence(at_i) = p;
-      h_other(at_i) = pair_j[p];
-      h_end(at_i) = 1;
-      if (pair_j[p] < nowned) {
-        const int at_j = fill_[pair_j[p]]++;
-        h_incidence(at_j) = p;
-        h_other(at_j) = pair_i[p];
-        h_end(at_j) = -1;
-      }
-    }
-    Kokkos::deep_copy(offsets_, h_offsets);
-    Kokkos::deep_copy(incidence_, h_incidence);
-    Kokkos::deep_copy(other_, h_other);
-    Kokkos::deep_copy(end_, h_end);
   }
 
   // The step's pairs already in DeviceType's memory (friction_pairs_kokkos.h), the views kept,
@@ -157,15 +88,11 @@ template <class DeviceType> class FrictionSolveKokkos {
       nowned_ = nowned;
       npartners_ = npartners;
       geometry_ = geometry;
-      partner_ = pair_j;
-      if (rows) {
-        run_atom_ = *rows;
-        run_start_ = *row_start;
-        nruns_ = nrows;
-        by_pairs_ = true;
-      } else {
-        runs_on_host(pair_i.data(), npairs);
-      }
+      by_pairs_ = true;
+      if (rows)
+        sums_.set_runs(pair_j, *rows, *row_start, nrows);
+      else
+        sums_.find_runs(pair_j, pair_i.data(), npairs);
     } else {
       set_pairs_in_kernels(pair_i, pair_j, geometry, npairs, nowned, npartners);
     }
@@ -179,69 +106,7 @@ template <class DeviceType> class FrictionSolveKokkos {
     npartners_ = npartners;
     geometry_ = geometry;
     by_pairs_ = false;
-    kk::grow(offsets_, nowned + 1);
-    Kokkos::deep_copy(offsets_, 0);
-    auto offsets = offsets_;
-    Kokkos::parallel_for(
-        "etd:incidence_count", Kokkos::RangePolicy<execution_space>(0, npairs),
-        KOKKOS_LAMBDA(const int p) {
-          Kokkos::atomic_inc(&offsets(pair_i(p) + 1));
-          if (pair_j(p) < nowned) Kokkos::atomic_inc(&offsets(pair_j(p) + 1));
-        });
-    int entries = 0;
-    Kokkos::parallel_scan(
-        "etd:incidence_place", Kokkos::RangePolicy<execution_space>(0, nowned + 1),
-        KOKKOS_LAMBDA(const int a, int &sum, const bool final) {
-          sum += offsets(a);
-          if (final) offsets(a) = sum;
-        },
-        entries);
-    kk::grow(incidence_, entries);
-    kk::grow(other_, entries);
-    kk::grow(end_, entries);
-    kk::grow(cursor_, nowned);
-    auto cursor = cursor_;
-    Kokkos::parallel_for(
-        "etd:incidence_cursor", Kokkos::RangePolicy<execution_space>(0, nowned),
-        KOKKOS_LAMBDA(const int a) { cursor(a) = offsets(a); });
-    auto incidence = incidence_;
-    auto other = other_;
-    auto end = end_;
-    Kokkos::parallel_for(
-        "etd:incidence_fill", Kokkos::RangePolicy<execution_space>(0, npairs),
-        KOKKOS_LAMBDA(const int p) {
-          const int i = pair_i(p), j = pair_j(p);
-          const int at_i = Kokkos::atomic_fetch_add(&cursor(i), 1);
-          incidence(at_i) = p;
-          other(at_i) = j;
-          end(at_i) = 1;
-          if (j < nowned) {
-            const int at_j = Kokkos::atomic_fetch_add(&cursor(j), 1);
-            incidence(at_j) = p;
-            other(at_j) = i;
-            end(at_j) = -1;
-          }
-        });
-    // the atomics placed each atom's entries in any order: back to pair order (a pair with an
-    // image of its own atom has both ends there, i's first), so that every sum has one order
-    Kokkos::parallel_for(
-        "etd:incidence_sort", Kokkos::RangePolicy<execution_space>(0, nowned),
-        KOKKOS_LAMBDA(const int a) {
-          for (int e = offsets(a) + 1; e < offsets(a + 1); e++) {
-            const int p = incidence(e), o = other(e), side = end(e);
-            int f = e;
-            for (; f > offsets(a) && (incidence(f - 1) > p ||
-                                      (incidence(f - 1) == p && end(f - 1) < side));
-                 f--) {
-              incidence(f) = incidence(f - 1);
-              other(f) = other(f - 1);
-              end(f) = end(f - 1);
-            }
-            incidence(f) = p;
-            other(f) = o;
-            end(f) = side;
-          }
-        });
+    incidence_.build_in_kernels(pair_i, pair_j, npairs, nowned);
   }
 
   // The friction step's right-hand side over the owned atoms, b = M v - (h/2) G u +
@@ -300,10 +165,10 @@ template <class DeviceType> class FrictionSolveKokkos {
     kk::grow(kick_, n);
     const bool moving = image_offsets != nullptr;
     if (moving) kk::grow(image_, n);
-    auto offsets = offsets_;
-    auto incidence = incidence_;
-    auto other = other_;
-    auto end = end_;
+    auto offsets = incidence_.offsets();
+    auto incidence = incidence_.incidence();
+    auto other = incidence_.other();
+    auto end = incidence_.end();
     auto geometry = geometry_;
     auto inertia_view = inertia_;
     auto given = x_;
@@ -315,10 +180,11 @@ template <class DeviceType> class FrictionSolveKokkos {
       // per pair: G u, the impulse and (moving images) the images' friction, + on i, - on j
       const int width = moving ? 9 : 6;
       if (moving)
-        add_pair_shares(StepShares{given, noise, offset, geometry, root, moving});
+        sums_.add(typename PairSums::StepShares{given, noise, offset, geometry, root, moving},
+                  nowned_);
       else
-        add_friction_shares<6>(given, 1.0, noise, root);
-      const Shares shares = shares_of(width);
+        sums_.template add_friction<6>(geometry_, given, 1.0, nowned_, noise, root);
+      const Shares shares = sums_.shares(width, nowned_);
       Kokkos::parallel_for(
           "etd:pair_terms", Kokkos::RangePolicy<execution_space>(0, nowned_),
           KOKKOS_LAMBDA(const int a) {
@@ -335,7 +201,7 @@ template <class DeviceType> class FrictionSolveKokkos {
         "etd:pair_terms", Kokkos::RangePolicy<execution_space>(0, nowned_),
         KOKKOS_LAMBDA(const int a) {
           double g[3];
-          apply_atom(a, given, inertia_view, offsets, incidence, other, geometry, 0.0, 1.0, g);
+          Incidence::apply_atom(a, given, inertia_view, offsets, incidence, other, geometry, 0.0, 1.0, g);
           double impulse[3] = {0.0, 0.0, 0.0};
           for (int e = offsets(a); e < offsets(a + 1); e++) {
             const int p = incidence(e);
@@ -494,8 +360,8 @@ template <class DeviceType> class FrictionSolveKokkos {
   // each atom's block of mass_weight M + friction_weight G, inverted (zero where held)
   void precondition_setup()
   {
-    auto offsets = offsets_;
-    auto incidence = incidence_;
+    auto offsets = incidence_.offsets();
+    auto incidence = incidence_.incidence();
     auto geometry = geometry_;
     auto inertia = inertia_;
     auto mobile = mobile_;
@@ -504,8 +370,8 @@ template <class DeviceType> class FrictionSolveKokkos {
     const double mass_weight = mass_weight_, friction_weight = friction_weight_;
     const bool by_pairs = by_pairs_;
     if (by_pairs)    // gamma w_D e e^T, the same on both ends
-      add_pair_shares(BlockShares{geometry});
-    const Shares shares = shares_of(6);
+      sums_.add(typename PairSums::BlockShares{geometry}, nowned_);
+    const Shares shares = sums_.shares(6, nowned_);
     Kokkos::parallel_for(
         "etd:precondition_setup", Kokkos::RangePolicy<execution_space>(0, nowned_),
         KOKKOS_LAMBDA(const int a) {
@@ -583,15 +449,15 @@ template <class DeviceType> class FrictionSolveKokkos {
       return;
     }
     fill_slots(x_);
-    auto offsets = offsets_;
-    auto incidence = incidence_;
-    auto other = other_;
+    auto offsets = incidence_.offsets();
+    auto incidence = incidence_.incidence();
+    auto other = incidence_.other();
     auto geometry = geometry_;
     Kokkos::parallel_for(
         "etd:start_residual", Kokkos::RangePolicy<execution_space>(0, nowned_),
         KOKKOS_LAMBDA(const int a) {
           double ax[3];
-          apply_atom(a, x, inertia, offsets, incidence, other, geometry, mass_weight,
+          Incidence::apply_atom(a, x, inertia, offsets, incidence, other, geometry, mass_weight,
                      friction_weight, ax);
           for (int k = 0; k < 3; k++)
             r(3 * a + k) = held(3 * a + k) == 0.0 ? b(3 * a + k) - ax[k] : 0.0;
@@ -603,15 +469,15 @@ template <class DeviceType> class FrictionSolveKokkos {
   {
     fill_slots(u);
     auto given = u;
-    auto offsets = offsets_;
-    auto incidence = incidence_;
-    auto other = other_;
+    auto offsets = incidence_.offsets();
+    auto incidence = incidence_.incidence();
+    auto other = incidence_.other();
     auto geometry = geometry_;
     auto inertia = inertia_;
     const double mass_weight = mass_weight_, friction_weight = friction_weight_;
     if (by_pairs_) {
-      add_friction_shares(u, friction_weight);
-      const Shares shares = shares_of(3);
+      sums_.add_friction(geometry_, u, friction_weight, nowned_);
+      const Shares shares = sums_.shares(3, nowned_);
       Kokkos::parallel_for(
           "etd:apply", Kokkos::RangePolicy<execution_space>(0, 3 * nowned_),
           KOKKOS_LAMBDA(const int d) {
@@ -622,7 +488,7 @@ template <class DeviceType> class FrictionSolveKokkos {
     Kokkos::parallel_for(
         "etd:apply", Kokkos::RangePolicy<execution_space>(0, nowned_), KOKKOS_LAMBDA(const int a) {
           double au[3];
-          apply_atom(a, given, inertia, offsets, incidence, other, geometry, mass_weight,
+          Incidence::apply_atom(a, given, inertia, offsets, incidence, other, geometry, mass_weight,
                      friction_weight, au);
           for (int k = 0; k < 3; k++) out(3 * a + k) = au[k];
         });
@@ -729,7 +595,7 @@ template <class DeviceType> class FrictionSolveKokkos {
         for (int k = 0; k < 3; k++)
           az[k] = mass_weight * inertia(3 * a + k) * z(3 * a + k) + shares.take(3 * a + k);
       else
-        apply_atom(a, z, inertia, offsets, incidence, other, geometry, mass_weight,
+        Incidence::apply_atom(a, z, inertia, offsets, incidence, other, geometry, mass_weight,
                    friction_weight, az);
       for (int k = 0; k < 3; k++) {
         const int d = 3 * a + k;
@@ -756,11 +622,12 @@ template <class DeviceType> class FrictionSolveKokkos {
       remove_mean(w_);
     } else {
       fill_slots(z_);
-      if (by_pairs_) add_friction_shares(z_, friction_weight_);
+      if (by_pairs_) sums_.add_friction(geometry_, z_, friction_weight_, nowned_);
     }
-    ApplyAndSum functor{cg_detail::NSUMS, z_, w_, r_, s_, b_, inertia_, held_, offsets_,
-                        incidence_, other_, geometry_, mass_weight_, friction_weight_,
-                        with_b, deflate_, by_pairs_, shares_of(3)};
+    ApplyAndSum functor{cg_detail::NSUMS, z_, w_, r_, s_, b_, inertia_, held_,
+                        incidence_.offsets(), incidence_.incidence(), incidence_.other(),
+                        geometry_, mass_weight_, friction_weight_, with_b, deflate_,
+                        by_pairs_, sums_.shares(3, nowned_)};
     Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> result(
         sums, cg_detail::NSUMS);
     Kokkos::parallel_reduce("etd:apply_and_sum", Kokkos::RangePolicy<execution_space>(0, nowned_),
@@ -768,206 +635,20 @@ template <class DeviceType> class FrictionSolveKokkos {
     global_sum(sums, with_b ? cg_detail::NSUMS : cg_detail::BB);
   }
 
-  Shares shares_of(int width) const
-  {
-    return {copies_, threads_, static_cast<std::size_t>(width) * nowned_};
-  }
-
-  // The runs of thread t's block of threads blocks with about equal numbers of pairs: the first
-  // run starting at or after t npairs / threads (run_start ascends)
-  KOKKOS_INLINE_FUNCTION static int first_run(const Indices &run_start, int nruns, int t,
-                                              int threads)
-  {
-    const long target = static_cast<long>(t) * run_start(nruns) / threads;
-    int lo = 0, hi = nruns;    // the first r with run_start(r) >= target, in [0, nruns]
-    while (lo < hi) {
-      const int mid = (lo + hi) / 2;
-      if (run_start(mid) < target)
-        lo = mid + 1;
-      else
-        hi = mid;
-    }
-    return lo;
-  }
-
-  // A pair's shares (add_pair_shares) under moving images: on i, G u, the impulse sqrt(h)
-  // noise e and the images' friction; on j the opposite
-  struct StepShares {
-    static constexpr int width = 9, j_sign = -1;
-    static constexpr const char *label = "etd:step_shares";
-    Values u, noise, offset;
-    Geometry geometry;
-    double root_h;
-    bool moving;
-    KOKKOS_FORCEINLINE_FUNCTION void operator()(int p, int i, int j, double *to_i) const
-    {
-      const double e[3] = {geometry(p, 0), geometry(p, 1), geometry(p, 2)};
-      const double projected = geometry(p, 3) *
-          (e[0] * (u(3 * i) - u(3 * j)) + e[1] * (u(3 * i + 1) - u(3 * j + 1)) +
-           e[2] * (u(3 * i + 2) - u(3 * j + 2)));
-      const double amount = root_h * noise(p);
-      double image = 0.0;
-      if (moving)
-        image = geometry(p, 3) *
-            (e[0] * (0.0 - offset(3 * p)) + e[1] * (0.0 - offset(3 * p + 1)) +
-             e[2] * (0.0 - offset(3 * p + 2)));
-      for (int k = 0; k < 3; k++) {
-        to_i[k] = projected * e[k];
-        to_i[3 + k] = amount * e[k];
-        to_i[6 + k] = image * e[k];
-      }
-    }
-  };
-  // the preconditioner's blocks: gamma w_D e e^T (xx yy zz xy xz yz), the same on both ends
-  struct BlockShares {
-    static constexpr int width = 6, j_sign = 1;
-    static constexpr const char *label = "etd:block_shares";
-    Geometry geometry;
-    KOKKOS_FORCEINLINE_FUNCTION void operator()(int p, int, int, double *to_i) const
-    {
-      const double g = geometry(p, 3), e0 = geometry(p, 0), e1 = geometry(p, 1),
-                   e2 = geometry(p, 2);
-      to_i[0] = g * e0 * e0;
-      to_i[1] = g * e1 * e1;
-      to_i[2] = g * e2 * e2;
-      to_i[3] = g * e0 * e1;
-      to_i[4] = g * e0 * e2;
-      to_i[5] = g * e1 * e2;
-    }
-  };
-
-  // For each run of pairs (atom i) on the host's threads, share(p, i, j, to_i) gives pair p's
-  // Share::width values on i, and j's are Share::j_sign times them: i's summed over the run and then added (the
-  // CPU solver's order), j's added where j is owned, each thread into its own copy. Every entry
-  // must be taken (Shares::take) before the next sum.
-  template <class Share> void add_pair_shares(const Share &share)
-  {
-    constexpr int Width = Share::width, JSign = Share::j_sign;
-    // one block of runs per thread (about equal numbers of pairs), block t into copy t (the
-    // same sums whichever thread runs it; no per-run token)
-    const int threads = execution_space().concurrency();
-    threads_ = threads;
-    const std::size_t stride = static_cast<std::size_t>(Width) * nowned_;
-    if (copies_.extent(0) < threads * stride)    // (zeroed, as take() leaves it)
-      copies_ = Values("etd:pair_shares", threads * stride);
-    auto copies = copies_;
-    auto run_atom = run_atom_;
-    auto run_start = run_start_;
-    auto partner = partner_;
-    const int nowned = nowned_, nruns = nruns_;
-    Kokkos::parallel_for(
-        Share::label, Kokkos::RangePolicy<execution_space>(0, threads),
-        KOKKOS_LAMBDA(const int t) {
-          double *copy = copies.data() + t * stride;
-          const int last = first_run(run_start, nruns, t + 1, threads);
-          for (int r = first_run(run_start, nruns, t, threads); r < last; r++) {
-            const int i = run_atom(r);
-            double sum[Width];
-            for (int k = 0; k < Width; k++) sum[k] = 0.0;
-            for (int p = run_start(r); p < run_start(r + 1); p++) {
-              const int j = partner(p);
-              double to_i[Width];
-              share(p, i, j, to_i);
-              for (int k = 0; k < Width; k++) sum[k] += to_i[k];
-              if (j < nowned)
-                for (int k = 0; k < Width; k++) {
-                  if (JSign > 0)
-                    copy[Width * j + k] += to_i[k];
-                  else
-                    copy[Width * j + k] -= to_i[k];
-                }
-            }
-            for (int k = 0; k < Width; k++) copy[Width * i + k] += sum[k];
-          }
-        });
-  }
-
-  // weight G u pair by pair, as accumulate_friction_by_runs() sums it (u over the partners):
-  // add_pair_shares written out, u_i and i's sum held through the run (the solve's hot loop).
-  // With the noise (Width 6), also the impulse root_h sum (+-) noise e, after G u's 3 values.
-  template <int Width = 3>
-  void add_friction_shares(const Values &u, double weight, const Values &noise = Values(),
-                           double root_h = 0.0)
-  {
-    static_assert(Width == 3 || Width == 6, "G u, or G u and the impulse");
-    const int threads = execution_space().concurrency();
-    threads_ = threads;
-    const std::size_t stride = Width * static_cast<std::size_t>(nowned_);
-    if (copies_.extent(0) < threads * stride)    // (zeroed, as take() leaves it)
-      copies_ = Values("etd:pair_shares", threads * stride);
-    auto copies = copies_;
-    auto run_atom = run_atom_;
-    auto run_start = run_start_;
-    auto partner = partner_;
-    auto geometry = geometry_;
-    const int nowned = nowned_, nruns = nruns_;
-    Kokkos::parallel_for(
-        "etd:friction_shares", Kokkos::RangePolicy<execution_space>(0, threads),
-        KOKKOS_LAMBDA(const int t) {
-          double *copy = copies.data() + t * stride;
-          const double *given = u.data();
-          const int last = first_run(run_start, nruns, t + 1, threads);
-          for (int r = first_run(run_start, nruns, t, threads); r < last; r++) {
-            const int i = run_atom(r);
-            const double ui0 = given[3 * i], ui1 = given[3 * i + 1], ui2 = given[3 * i + 2];
-            double sum0 = 0.0, sum1 = 0.0, sum2 = 0.0, kick0 = 0.0, kick1 = 0.0, kick2 = 0.0;
-            for (int p = run_start(r); p < run_start(r + 1); p++) {
-              const int j = partner(p);
-              const double e0 = geometry(p, 0), e1 = geometry(p, 1), e2 = geometry(p, 2);
-              const double projected = weight * geometry(p, 3) *
-                  (e0 * (ui0 - given[3 * j]) + e1 * (ui1 - given[3 * j + 1]) +
-                   e2 * (ui2 - given[3 * j + 2]));
-              const double f0 = projected * e0, f1 = projected * e1, f2 = projected * e2;
-              sum0 += f0;
-              sum1 += f1;
-              sum2 += f2;
-              if (j < nowned) {
-                copy[Width * j] -= f0;
-                copy[Width * j + 1] -= f1;
-                copy[Width * j + 2] -= f2;
-              }
-              if (Width == 6) {    // (not if constexpr: CUDA lambdas may not first capture there)
-                const double amount = root_h * noise(p);
-                const double k0 = amount * e0, k1 = amount * e1, k2 = amount * e2;
-                kick0 += k0;
-                kick1 += k1;
-                kick2 += k2;
-                if (j < nowned) {
-                  copy[6 * j + 3] -= k0;
-                  copy[6 * j + 4] -= k1;
-                  copy[6 * j + 5] -= k2;
-                }
-              }
-            }
-            copy[Width * i] += sum0;
-            copy[Width * i + 1] += sum1;
-            copy[Width * i + 2] += sum2;
-            if (Width == 6) {
-              copy[6 * i + 3] += kick0;
-              copy[6 * i + 4] += kick1;
-              copy[6 * i + 5] += kick2;
-            }
-          }
-        });
-  }
-
  private:
   int nowned_ = 0, npartners_ = 0;
-  // by pairs: each pair's partner, and the runs (atom, first pair; nruns_ + 1 starts)
+  // G applied by pairs (the host's threads: sums_) or by atoms (a device: incidence_)
   bool by_pairs_ = false;
-  Indices partner_, run_atom_, run_start_;
-  int nruns_ = 0;
-  Values copies_;    // each thread's copy of a sum over the pairs (Shares)
-  int threads_ = 1;
+  PairSums sums_;
+  Incidence incidence_;
+  Indices partner_;    // each pair's j, where the host set_pairs() gives the pairs
   double mass_weight_ = 1.0, friction_weight_ = 0.0;
   const Exchange *exchange_ = nullptr;
   const GlobalSum *global_sum_ = nullptr;
   bool deflate_ = false;
   double active_[3] = {0.0, 0.0, 0.0};    // per component, the unknowns solved over all ranks
   Geometry geometry_;     // e0, e1, e2, gamma w_D per pair
-  // per owned atom, its pairs, their other atoms and which end of each it is (1: i, -1: j)
-  Indices offsets_, incidence_, other_, end_, cursor_;
-  std::vector<int> fill_, pair_i_, pair_j_;
+  std::vector<int> pair_i_, pair_j_;
   Indices mobile_;
   Values inertia_, b_, inverse_, held_;    // held_: 1 on unknowns held at their start
   Values r_, z_, p_, w_, s_, x_;           // z_ and x_ over the partners: G acts on them
@@ -984,30 +665,6 @@ template <class DeviceType> class FrictionSolveKokkos {
     Kokkos::deep_copy(vector, host);
   }
 
-  // out_a = mass_weight m_a u_a + friction_weight (G u)_a for atom a (u over the partners).
-  // A pair's share on either of its atoms is gamma w_D (e . (u_a - u_other)) e: the sign of e
-  // cancels, so each atom reads only its own entries.
-  KOKKOS_INLINE_FUNCTION static void apply_atom(int a, const Values &u, const Values &inertia,
-                                                const Indices &offsets, const Indices &incidence,
-                                                const Indices &other, const Geometry &geometry,
-                                                double mass_weight, double friction_weight,
-                                                double out[3])
-  {
-    const double ua0 = u(3 * a), ua1 = u(3 * a + 1), ua2 = u(3 * a + 2);
-    double sum0 = 0.0, sum1 = 0.0, sum2 = 0.0;
-    for (int e = offsets(a); e < offsets(a + 1); e++) {
-      const int p = incidence(e), o = other(e);
-      const double e0 = geometry(p, 0), e1 = geometry(p, 1), e2 = geometry(p, 2);
-      const double projected = geometry(p, 3) *
-          (e0 * (ua0 - u(3 * o)) + e1 * (ua1 - u(3 * o + 1)) + e2 * (ua2 - u(3 * o + 2)));
-      sum0 += projected * e0;
-      sum1 += projected * e1;
-      sum2 += projected * e2;
-    }
-    out[0] = mass_weight * inertia(3 * a) * ua0 + friction_weight * sum0;
-    out[1] = mass_weight * inertia(3 * a + 1) * ua1 + friction_weight * sum1;
-    out[2] = mass_weight * inertia(3 * a + 2) * ua2 + friction_weight * sum2;
-  }
 };
 
 }    // namespace etd
