@@ -539,3 +539,40 @@ TEST(FrictionPairsKokkos, AssemblesThePairsTheHostRulesGive)
     if (moving) EXPECT_GT(moving_pairs, 2);
   }
 }
+
+// The host threads' blocks of runs (friction_pair_sums_kokkos.h): for 1 to 7 threads every run
+// with pairs falls in exactly one block, in order, and no block holds more than its share of the
+// pairs and one run (the first half of the runs long, the second short, as no equal split of
+// the runs would give); runs without pairs (an atom's empty row) anywhere
+TEST(PairSumsKokkos, BlocksCoverEveryRunOnceWithTheirShareOfPairs)
+{
+  using PairSums = etd::PairSumsKokkos<Device>;
+  std::mt19937_64 gen(13);
+  std::uniform_int_distribution<int> long_run(5, 9), short_run(0, 1);
+  std::vector<int> lengths;
+  for (int r = 0; r < 300; r++)
+    lengths.push_back(r % 17 == 0 ? 0 : (r < 150 ? long_run(gen) : short_run(gen)));
+  lengths.push_back(0);
+  const int nruns = int(lengths.size());
+  PairSums::Indices run_start("run_start", nruns + 1);
+  auto h_start = Kokkos::create_mirror_view(run_start);
+  h_start(0) = 0;
+  for (int r = 0; r < nruns; r++) h_start(r + 1) = h_start(r) + lengths[r];
+  Kokkos::deep_copy(run_start, h_start);
+  const int npairs = h_start(nruns);
+  for (int threads = 1; threads <= 7; threads++) {
+    std::vector<int> owner(nruns, -1);
+    int previous_last = 0;
+    for (int t = 0; t < threads; t++) {
+      const int first = PairSums::first_run(h_start, nruns, t, threads);
+      const int last = PairSums::first_run(h_start, nruns, t + 1, threads);
+      EXPECT_EQ(first, previous_last) << threads << " threads, block " << t;
+      previous_last = last;
+      for (int r = first; r < last; r++) owner[r] = t;
+      EXPECT_LE(h_start(last) - h_start(first), npairs / threads + 1 + 9)
+          << threads << " threads, block " << t;
+    }
+    for (int r = 0; r < nruns; r++)
+      if (lengths[r] > 0) EXPECT_GE(owner[r], 0) << threads << " threads, run " << r;
+  }
+}

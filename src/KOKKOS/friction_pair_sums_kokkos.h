@@ -78,7 +78,8 @@ template <class DeviceType> class PairSumsKokkos {
 
   // The runs of thread t's block of threads blocks with about equal numbers of pairs: the first
   // run starting at or after t npairs / threads (run_start ascends)
-  KOKKOS_INLINE_FUNCTION static int first_run(const Indices &run_start, int nruns, int t,
+  template <class Starts>
+  KOKKOS_INLINE_FUNCTION static int first_run(const Starts &run_start, int nruns, int t,
                                               int threads)
   {
     const long target = static_cast<long>(t) * run_start(nruns) / threads;
