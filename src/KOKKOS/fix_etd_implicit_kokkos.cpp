@@ -64,7 +64,7 @@ template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::setup(int vfl
   FixETDImplicit::setup(vflag);
 }
 
-// the kernels assemble dpd/gen-type pairs for the inertial scheme
+// the kernels assemble dpd/gen-type pairs (translation), for the inertial step and the overdamped
 template <class DeviceType> bool FixETDImplicitKokkos<DeviceType>::assembles_in_kernels() const
 {
   return dofs == 3 && !assembly.has_fpm_pairs();
