@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <utility>
 
 using namespace LAMMPS_NS;
 
@@ -142,6 +143,12 @@ void PairDPDBase::request_newton_off_list()
     no_virial_fdotr_compute = 1;
     fdotr_turned_off = true;
   }
+}
+
+void PairDPDBase::run_in_chunks(int chunks, ChunkRunner runner)
+{
+  loop_chunks = chunks;
+  loop_runner = std::move(runner);
 }
 
 bool PairDPDBase::use_external_pairs(const etd::ExternalPairs *source)

@@ -95,6 +95,15 @@ class PairDPDBase : public Pair, public etd::DpdPairInterface {
   const etd::ExternalPairs *external_pairs;
   etd::PairListView pair_list;    // what the force loop reads this compute (select_pairs)
   void select_pairs();
+  // The conservative-only loop (fix etd's implicit scheme) in chunks of rows run by runner
+  // (the KOKKOS style's host threads), each into forces of its own, summed after; without a
+  // runner it runs on one thread
+  using ChunkRunner = etd::CellPairSearch::ChunkRunner;
+  void run_in_chunks(int chunks, ChunkRunner runner);
+  int loop_chunks = 1;
+  ChunkRunner loop_runner;
+  std::vector<std::vector<double>> chunk_forces;
+  std::vector<std::vector<int>> chunk_close;
   double **friction;        // [nmax][3] translational diagonal
   double **rot_friction;    // [nmax][3] rotational diagonal (with rotation only)
   double **split;           // [nmax][split_values]
@@ -121,8 +130,12 @@ class PairDPDBase : public Pair, public etd::DpdPairInterface {
   void compute_pairs(const typename Law::Coefficients *table, int stride, int eflag, int vflag);
   template <class Law, int EVFLAG>
   void eval_with_extras(const typename Law::Coefficients *table, int stride);
+  // the force loop over the rows [first_row, last_row) (last_row < 0: all), into forces
+  // (nullptr: atom->f) with close as its scratch (nullptr: close_neighbors)
   template <class Law, int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE>
-  void eval(const typename Law::Coefficients *table, int stride);
+  void eval(const typename Law::Coefficients *table, int stride, int first_row = 0,
+            int last_row = -1, double *forces = nullptr, std::vector<int> *close = nullptr);
+  template <class Law> void eval_conservative_in_chunks(const typename Law::Coefficients *table, int stride);
   template <class Law, int DISSIPATIVE>
   void tally(const Law &pair, const typename Law::Coefficients &c, const etd::PairGeometry &g,
              int i, int j, int nlocal, int newton_pair);
@@ -147,6 +160,8 @@ void PairDPDBase::compute_pairs(const typename Law::Coefficients *table, int str
 
   if (evflag)
     eval_with_extras<Law, 1>(table, stride);
+  else if (conservative_only && !extras && loop_runner && loop_chunks > 1 && !Law::rotation)
+    eval_conservative_in_chunks<Law>(table, stride);
   else
     eval_with_extras<Law, 0>(table, stride);
   finish_extras(extras);
@@ -173,14 +188,42 @@ void PairDPDBase::eval_with_extras(const typename Law::Coefficients *table, int 
 
 // DISSIPATIVE = 0: only the law's conservative force, which is central and makes no torque:
 // what fix etd's implicit scheme leaves to the pair style (it applies friction and noise).
+// The conservative-only loop in chunks of rows at once, each into forces of its own over all
+// atoms (ghosts too where newton is on), then summed into f chunk after chunk, atoms split
+// among the chunks
+template <class Law>
+void PairDPDBase::eval_conservative_in_chunks(const typename Law::Coefficients *table, int stride)
+{
+  const int chunks = loop_chunks;
+  const std::size_t values = 3 * static_cast<std::size_t>(atom->nlocal + atom->nghost);
+  const long rows = pair_list.inum;
+  chunk_forces.resize(chunks);
+  chunk_close.resize(chunks);
+  loop_runner(chunks, [&](int k) {
+    chunk_forces[k].assign(values, 0.0);
+    eval<Law, 0, 0, 0, 0>(table, stride, static_cast<int>(k * rows / chunks),
+                          static_cast<int>((k + 1) * rows / chunks), chunk_forces[k].data(),
+                          &chunk_close[k]);
+  });
+  if (values == 0) return;
+  double *f = atom->f[0];
+  loop_runner(chunks, [&](int k) {
+    for (std::size_t d = k * values / chunks; d < (k + 1) * values / chunks; d++)
+      for (int c = 0; c < chunks; c++) f[d] += chunk_forces[c][d];
+  });
+}
+
 template <class Law, int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE>
-void PairDPDBase::eval(const typename Law::Coefficients *table, int stride)
+void PairDPDBase::eval(const typename Law::Coefficients *table, int stride, int first_row,
+                       int last_row, double *forces, std::vector<int> *close)
 {
   if (pair_list.inum == 0) return;    // (x may be unallocated on a rank without atoms)
+  if (last_row < 0) last_row = pair_list.inum;
+  std::vector<int> &close_list = close ? *close : close_neighbors;
   // LAMMPS stores x, v, f, omega and torque contiguously: atom j's row is at 3 j
   const double *xflat = atom->x[0];
   const double *vflat = atom->v[0];
-  double *fflat = atom->f[0];
+  double *fflat = forces ? forces : atom->f[0];
   const double *omegaflat = Law::rotation ? atom->omega[0] : nullptr;
   double *torqueflat = Law::rotation ? atom->torque[0] : nullptr;
   const int *type = atom->type;
@@ -190,7 +233,7 @@ void PairDPDBase::eval(const typename Law::Coefficients *table, int stride)
   const int newton_pair = forces_on_ghosts();
   const etd::PairStep step{noise, update->ntimestep, 1.0 / std::sqrt(update->dt)};
 
-  for (int ii = 0; ii < pair_list.inum; ii++) {
+  for (int ii = first_row; ii < last_row; ii++) {
     const int i = pair_list.ilist[ii];
     // atom i's values and sums stay in registers over its neighbours (stores to j could alias
     // them in memory)
@@ -211,10 +254,10 @@ void PairDPDBase::eval(const typename Law::Coefficients *table, int stride)
         [&](int j, double rsq) {
           return rsq < cutsqi[type[j]];
         },
-        close_neighbors);
-    const int *close = close_neighbors.data();
+        close_list);
+    const int *near = close_list.data();
     for (int jj = 0; jj < nclose; jj++) {
-      int j = close[jj];
+      int j = near[jj];
       const double factor = special_lj[sbmask(j)];
       j &= NEIGHMASK;
       const double *xj = xflat + 3 * j;

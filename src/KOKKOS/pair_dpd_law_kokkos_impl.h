@@ -95,6 +95,13 @@ template <class DeviceType, class Style> void PairDPDLawKokkos<DeviceType, Style
   this->execution_space = Host;
   this->datamask_read = ALL_MASK;
   this->datamask_modify = ALL_MASK;
+  // the conservative-only loop (fix etd's implicit scheme) on the host's threads
+  using HostSpace = Kokkos::DefaultHostExecutionSpace;
+  this->run_in_chunks(HostSpace().concurrency(),
+                      [](int n, const std::function<void(int)> &body) {
+                        Kokkos::parallel_for("etd:pair_loop", Kokkos::RangePolicy<HostSpace>(0, n),
+                                             [&](const int k) { body(k); });
+                      });
 }
 
 template <class DeviceType, class Style>
