@@ -19,12 +19,8 @@ template <class DeviceType>
 FixETDImplicitKokkos<DeviceType>::FixETDImplicitKokkos(LAMMPS *lmp, int narg, char **arg) :
     FixETDImplicit(lmp, narg, arg)
 {
-  using Host = Kokkos::DefaultHostExecutionSpace;
-  own.chunks = Host().concurrency();
-  own.runner = [](int n, const std::function<void(int)> &body) {
-    Kokkos::parallel_for("etd:pair_search", Kokkos::RangePolicy<Host>(0, n),
-                         [&](const int k) { body(k); });
-  };
+  own.chunks = Kokkos::DefaultHostExecutionSpace().concurrency();
+  own.runner = etd::kk::host_chunk_runner("etd:pair_search");
 }
 
 template <class DeviceType> void *FixETDImplicitKokkos<DeviceType>::extract(const char *name, int &dim)

@@ -76,6 +76,20 @@ template <class DeviceType> class PairSumsKokkos {
     return {copies_, threads_, static_cast<std::size_t>(width) * nowned};
   }
 
+  // What a sum's kernel reads (blocks_of()): the runs and each thread's copy
+  struct Blocks {
+    Values copies;
+    Indices run_atom, run_start, partner;
+    int nruns, threads;
+    std::size_t stride;
+    KOKKOS_INLINE_FUNCTION double *copy(int t) const { return copies.data() + t * stride; }
+    // the first run of block t (t = threads: past the last)
+    KOKKOS_INLINE_FUNCTION int first_run(int t) const
+    {
+      return PairSumsKokkos::first_run(run_start, nruns, t, threads);
+    }
+  };
+
   // The runs of thread t's block of threads blocks with about equal numbers of pairs: the first
   // run starting at or after t npairs / threads (run_start ascends)
   template <class Starts>
@@ -148,26 +162,18 @@ template <class DeviceType> class PairSumsKokkos {
   template <class Share> void add(const Share &share, int nowned)
   {
     constexpr int Width = Share::width, JSign = Share::j_sign;
-    // one block of runs per thread (about equal numbers of pairs), block t into copy t (the
-    // same sums whichever thread runs it; no per-run token)
-    const int threads = execution_space().concurrency();
-    const std::size_t stride = grow_copies(Width, nowned, threads);
-    auto copies = copies_;
-    auto run_atom = run_atom_;
-    auto run_start = run_start_;
-    auto partner = partner_;
-    const int nruns = nruns_;
+    const Blocks blocks = blocks_of(Width, nowned);
     Kokkos::parallel_for(
-        Share::label, Kokkos::RangePolicy<execution_space>(0, threads),
+        Share::label, Kokkos::RangePolicy<execution_space>(0, blocks.threads),
         KOKKOS_LAMBDA(const int t) {
-          double *copy = copies.data() + t * stride;
-          const int last = first_run(run_start, nruns, t + 1, threads);
-          for (int r = first_run(run_start, nruns, t, threads); r < last; r++) {
-            const int i = run_atom(r);
+          double *copy = blocks.copy(t);
+          const int last = blocks.first_run(t + 1);
+          for (int r = blocks.first_run(t); r < last; r++) {
+            const int i = blocks.run_atom(r);
             double sum[Width];
             for (int k = 0; k < Width; k++) sum[k] = 0.0;
-            for (int p = run_start(r); p < run_start(r + 1); p++) {
-              const int j = partner(p);
+            for (int p = blocks.run_start(r); p < blocks.run_start(r + 1); p++) {
+              const int j = blocks.partner(p);
               double to_i[Width];
               share(p, i, j, to_i);
               for (int k = 0; k < Width; k++) sum[k] += to_i[k];
@@ -192,25 +198,19 @@ template <class DeviceType> class PairSumsKokkos {
                     const Values &noise = Values(), double root_h = 0.0)
   {
     static_assert(Width == 3 || Width == 6, "G u, or G u and the impulse");
-    const int threads = execution_space().concurrency();
-    const std::size_t stride = grow_copies(Width, nowned, threads);
-    auto copies = copies_;
-    auto run_atom = run_atom_;
-    auto run_start = run_start_;
-    auto partner = partner_;
-    const int nruns = nruns_;
+    const Blocks blocks = blocks_of(Width, nowned);
     Kokkos::parallel_for(
-        "etd:friction_shares", Kokkos::RangePolicy<execution_space>(0, threads),
+        "etd:friction_shares", Kokkos::RangePolicy<execution_space>(0, blocks.threads),
         KOKKOS_LAMBDA(const int t) {
-          double *copy = copies.data() + t * stride;
+          double *copy = blocks.copy(t);
           const double *given = u.data();
-          const int last = first_run(run_start, nruns, t + 1, threads);
-          for (int r = first_run(run_start, nruns, t, threads); r < last; r++) {
-            const int i = run_atom(r);
+          const int last = blocks.first_run(t + 1);
+          for (int r = blocks.first_run(t); r < last; r++) {
+            const int i = blocks.run_atom(r);
             const double ui0 = given[3 * i], ui1 = given[3 * i + 1], ui2 = given[3 * i + 2];
             double sum0 = 0.0, sum1 = 0.0, sum2 = 0.0, kick0 = 0.0, kick1 = 0.0, kick2 = 0.0;
-            for (int p = run_start(r); p < run_start(r + 1); p++) {
-              const int j = partner(p);
+            for (int p = blocks.run_start(r); p < blocks.run_start(r + 1); p++) {
+              const int j = blocks.partner(p);
               const double e0 = geometry(p, 0), e1 = geometry(p, 1), e2 = geometry(p, 2);
               const double projected = weight * geometry(p, 3) *
                   (e0 * (ui0 - given[3 * j]) + e1 * (ui1 - given[3 * j + 1]) +
@@ -255,15 +255,17 @@ template <class DeviceType> class PairSumsKokkos {
   Values copies_;    // each thread's copy of a sum over the pairs (Shares)
   int threads_ = 1;
 
-  // the copies for width values per atom on each thread (zeroed where they grow, as take()
-  // leaves them); returns a copy's stride
-  std::size_t grow_copies(int width, int nowned, int threads)
+  // The copies for width values per atom on each thread (zeroed where they grow, as take()
+  // leaves them), with the runs, for a sum's kernel: one block of runs per thread (about equal
+  // numbers of pairs), block t into copy t (the same sums whichever thread runs it; no per-run
+  // token)
+  Blocks blocks_of(int width, int nowned)
   {
-    threads_ = threads;
+    threads_ = execution_space().concurrency();
     const std::size_t stride = static_cast<std::size_t>(width) * nowned;
-    if (copies_.extent(0) < threads * stride)
-      copies_ = Values("etd:pair_shares", threads * stride);
-    return stride;
+    if (copies_.extent(0) < threads_ * stride)
+      copies_ = Values("etd:pair_shares", threads_ * stride);
+    return {copies_, run_atom_, run_start_, partner_, nruns_, threads_, stride};
   }
 };
 

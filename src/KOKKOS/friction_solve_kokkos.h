@@ -295,14 +295,7 @@ template <class DeviceType> class FrictionSolveKokkos {
   {
     deflate_ = deflate;
     for (double &count : active_) count = 0.0;
-    if (!deflate) return;
-    auto held = held_;
-    Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> counts(
-        active_, 3);
-    Kokkos::parallel_reduce(
-        "etd:deflate_count", Kokkos::RangePolicy<execution_space>(0, nowned_),
-        ComponentSums{held, held, true}, counts);
-    (*global_sum_)(active_, 3);
+    if (deflate) component_sums(ComponentSums{held_, held_, true}, active_);
   }
 
   // The per-component mean over the solved unknowns (those not held) subtracted from them, where
@@ -312,12 +305,7 @@ template <class DeviceType> class FrictionSolveKokkos {
     if (!deflate_) return;
     auto held = held_;
     double sums[3] = {0.0, 0.0, 0.0};
-    Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> result(
-        sums, 3);
-    Kokkos::parallel_reduce(
-        "etd:deflate_sum", Kokkos::RangePolicy<execution_space>(0, nowned_),
-        ComponentSums{vector, held, false}, result);
-    (*global_sum_)(sums, 3);
+    component_sums(ComponentSums{vector, held, false}, sums);
     double mean[3];
     for (int k = 0; k < 3; k++) mean[k] = active_[k] > 0.0 ? sums[k] / active_[k] : 0.0;
     const double m0 = mean[0], m1 = mean[1], m2 = mean[2];
@@ -353,6 +341,16 @@ template <class DeviceType> class FrictionSolveKokkos {
         if (held(3 * a + k) == 0.0) sums[k] += count ? 1.0 : values(3 * a + k);
     }
   };
+
+  // a ComponentSums reduction over the owned atoms, summed over the ranks, into out[3]
+  void component_sums(const ComponentSums &sums, double out[3]) const
+  {
+    Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> result(
+        out, 3);
+    Kokkos::parallel_reduce(sums.count ? "etd:deflate_count" : "etd:deflate_sum",
+                            Kokkos::RangePolicy<execution_space>(0, nowned_), sums, result);
+    (*global_sum_)(out, 3);
+  }
 
   // (The kernels and their launchers are public: CUDA requires a kernel's functor type and the
   // function enclosing an extended device lambda to be.)

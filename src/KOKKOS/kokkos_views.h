@@ -11,6 +11,7 @@
 #include <Kokkos_Core.hpp>
 
 #include <cstddef>
+#include <functional>
 
 namespace etd {
 namespace kk {
@@ -27,6 +28,18 @@ template <class View> void grow(View &view, std::size_t n)
 {
   if (view.extent(0) < n)
     view = View(Kokkos::view_alloc(Kokkos::WithoutInitializing, "etd:kernels"), n);
+}
+
+// Runs body(k) for k in [0, n) on the host's threads (Kokkos's default host execution space),
+// a kernel labelled label: the runner of the host loops that take chunks (CellPairSearch's
+// slabs, the pair style's rows)
+inline std::function<void(int, const std::function<void(int)> &)> host_chunk_runner(
+    const char *label)
+{
+  return [label](int n, const std::function<void(int)> &body) {
+    Kokkos::parallel_for(label, Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, n),
+                         [&](const int k) { body(k); });
+  };
 }
 
 // the first n entries of view from a host array (grown to hold them)

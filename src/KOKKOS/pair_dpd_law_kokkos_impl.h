@@ -96,12 +96,8 @@ template <class DeviceType, class Style> void PairDPDLawKokkos<DeviceType, Style
   this->datamask_read = ALL_MASK;
   this->datamask_modify = ALL_MASK;
   // the conservative-only loop (fix etd's implicit scheme) on the host's threads
-  using HostSpace = Kokkos::DefaultHostExecutionSpace;
-  this->run_in_chunks(HostSpace().concurrency(),
-                      [](int n, const std::function<void(int)> &body) {
-                        Kokkos::parallel_for("etd:pair_loop", Kokkos::RangePolicy<HostSpace>(0, n),
-                                             [&](const int k) { body(k); });
-                      });
+  this->run_in_chunks(Kokkos::DefaultHostExecutionSpace().concurrency(),
+                      etd::kk::host_chunk_runner("etd:pair_loop"));
 }
 
 template <class DeviceType, class Style>
