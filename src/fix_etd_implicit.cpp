@@ -256,11 +256,13 @@ void FixETDImplicit::kick(double fraction)
   double **v = atom->v;
   double **f = atom->f;
   const int *mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit) {
-      const double scale = fraction * dt / atom_mass(i);
-      for (int k = 0; k < 3; k++) v[i][k] += scale * f[i][k];
-    }
+  threads.for_ranges(atom->nlocal, [&](int begin, int end, int) {
+    for (int i = begin; i < end; i++)
+      if (mask[i] & groupbit) {
+        const double scale = fraction * dt / atom_mass(i);
+        for (int k = 0; k < 3; k++) v[i][k] += scale * f[i][k];
+      }
+  });
   if (dofs == 6) {    // torques from anything but the DPD friction and noise (none from dpd/fpm)
     double **omega = atom->omega;
     double **torque = atom->torque;
@@ -278,13 +280,15 @@ void FixETDImplicit::dof_inertia(std::vector<double> &inertia) const
 {
   const int nlocal = atom->nlocal;
   inertia.resize(dofs * nlocal);
-  for (int i = 0; i < nlocal; i++) {
-    const double m = atom_mass(i);
-    for (int k = 0; k < 3; k++) inertia[dofs * i + k] = m;
-    if (dofs == 6)
-      for (int k = 3; k < 6; k++)
-        inertia[dofs * i + k] = 0.4 * m * atom->radius[i] * atom->radius[i];
-  }
+  threads.for_ranges(nlocal, [&](int begin, int end, int) {
+    for (int i = begin; i < end; i++) {
+      const double m = atom_mass(i);
+      for (int k = 0; k < 3; k++) inertia[dofs * i + k] = m;
+      if (dofs == 6)
+        for (int k = 3; k < 6; k++)
+          inertia[dofs * i + k] = 0.4 * m * atom->radius[i] * atom->radius[i];
+    }
+  });
 }
 
 // the unknowns of atom i as stored in LAMMPS: v, then Omega with rotation
@@ -298,9 +302,11 @@ void FixETDImplicit::drift(double fraction)
   double **x = atom->x;
   double **v = atom->v;
   const int *mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit)
-      for (int k = 0; k < 3; k++) x[i][k] += fraction * dt * v[i][k];
+  threads.for_ranges(atom->nlocal, [&](int begin, int end, int) {
+    for (int i = begin; i < end; i++)
+      if (mask[i] & groupbit)
+        for (int k = 0; k < 3; k++) x[i][k] += fraction * dt * v[i][k];
+  });
 }
 
 void FixETDImplicit::initial_integrate(int)
@@ -361,11 +367,13 @@ void FixETDImplicit::add_drift_kinetic_stress()
 
 void FixETDImplicit::record_end_velocity()
 {
-  for (int i = 0; i < atom->nlocal; i++) {
-    const bool kicked = !options.overdamped && (atom->mask[i] & groupbit);
-    const double scale = kicked ? 0.5 * dt / atom_mass(i) : 0.0;
-    for (int k = 0; k < 3; k++) end_velocity[i][k] = atom->v[i][k] + scale * atom->f[i][k];
-  }
+  threads.for_ranges(atom->nlocal, [&](int begin, int end, int) {
+    for (int i = begin; i < end; i++) {
+      const bool kicked = !options.overdamped && (atom->mask[i] & groupbit);
+      const double scale = kicked ? 0.5 * dt / atom_mass(i) : 0.0;
+      for (int k = 0; k < 3; k++) end_velocity[i][k] = atom->v[i][k] + scale * atom->f[i][k];
+    }
+  });
 }
 
 double FixETDImplicit::atom_mass(int i) const
@@ -384,10 +392,12 @@ void FixETDImplicit::post_integrate()
   double **f = atom->f;
   std::vector<double> &lead = work.lead;
   lead.resize(3 * nlocal);
-  for (int i = 0; i < nlocal; i++) {
-    const double kick = options.overdamped ? 0.0 : dt / atom_mass(i);
-    for (int k = 0; k < 3; k++) lead[3 * i + k] = 0.5 * dt * (v[i][k] + kick * f[i][k]);
-  }
+  threads.for_ranges(nlocal, [&](int begin, int end, int) {
+    for (int i = begin; i < end; i++) {
+      const double kick = options.overdamped ? 0.0 : dt / atom_mass(i);
+      for (int k = 0; k < 3; k++) lead[3 * i + k] = 0.5 * dt * (v[i][k] + kick * f[i][k]);
+    }
+  });
   if (neighbor_safety.could_outrun(lmp, groupbit, lead)) next_reneighbor = update->ntimestep;
 }
 

@@ -83,7 +83,8 @@ void FixETDImplicit::search_own_pairs(double margin)
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
   const double *x = nall > 0 ? atom->x[0] : nullptr;
-  own.search.build(x, nlocal, nall, own.cutoff + margin, list_newton_off, own.chunks, own.runner);
+  own.search.build(x, nlocal, nall, own.cutoff + margin, list_newton_off, threads.chunks,
+                   threads.runner);
   own.view = own.search.view();
   own.positions.assign(x, x + 3 * nlocal);
   partners.invalidate();    // the ghosts these pairs use
@@ -95,12 +96,20 @@ void FixETDImplicit::search_own_pairs(double margin)
 void FixETDImplicit::refresh_own_pairs()
 {
   double **x = atom->x;
-  double top[2] = {0.0, 0.0};
-  for (int i = 0; i < atom->nlocal; i++) {
-    double dsq = 0.0;
-    for (int k = 0; k < 3; k++) dsq += std::pow(x[i][k] - own.positions[3 * i + k], 2);
-    etd::keep_two_largest(top, std::sqrt(dsq));
-  }
+  const int nlocal = atom->nlocal;
+  // (the two largest of all ranges are the two largest of their parts)
+  std::vector<double> tops(2 * threads.ranges(nlocal), 0.0);
+  threads.for_ranges(nlocal, [&](int begin, int end, int range) {
+    double *top = &tops[2 * range];
+    for (int i = begin; i < end; i++) {
+      double dsq = 0.0;
+      for (int k = 0; k < 3; k++) dsq += std::pow(x[i][k] - own.positions[3 * i + k], 2);
+      etd::keep_two_largest(top, std::sqrt(dsq));
+    }
+  });
+  double top[2] = {tops[0], tops[1]};
+  for (int range = 1; range < threads.ranges(nlocal); range++)
+    for (int k = 0; k < 2; k++) etd::keep_two_largest(top, tops[2 * range + k]);
   const double local[3] = {0.0, top[0], top[1]};
   double global[3];
   etd::NeighborSafety::reduce_with_flag(local, global, world);

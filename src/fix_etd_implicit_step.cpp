@@ -103,8 +103,10 @@ void FixETDImplicit::friction_step_rhs()
   std::vector<double> &ghost_u = work.ghost_u;
   ghost_u.resize(dofs * nall);
   rhs.resize(dofs * nlocal);
-  for (int i = 0; i < nlocal; i++)
-    for (int k = 0; k < dofs; k++) ghost_u[dofs * i + k] = *dof_pointer(i, k);
+  threads.for_ranges(nlocal, [&](int begin, int end, int) {
+    for (int i = begin; i < end; i++)
+      for (int k = 0; k < dofs; k++) ghost_u[dofs * i + k] = *dof_pointer(i, k);
+  });
   ghosts.run(lmp, this, {{&ghost_u, dofs}}, true);
   build_pairs();
   // u over the partners: owned atoms, then each remote slot from one of its ghost images
@@ -188,27 +190,35 @@ void FixETDImplicit::conserve_momentum_and_measure()
   // One reduction for both this and the kinetic energy of the shifted velocities below:
   // sum m (v + c)^2 = sum m v^2 + 2 c . sum m v + c^2 sum m.
   enum { DEFICIT = 0, MASS = 3, MOMENTUM = 4, TWICE_KINETIC = 7, COMPONENTS = 8, NSUMS = 9 };
-  double local[NSUMS] = {}, sums[NSUMS];
-  for (int i = 0; i < nlocal; i++)
-    if (mask[i] & groupbit) {
-      const double m = inertia[dofs * i];
-      const double *s = &solution[dofs * i];
-      for (int k = 0; k < 3; k++) {
-        local[DEFICIT + k] += m * (*dof_pointer(i, k) - s[k]);
-        local[MOMENTUM + k] += m * s[k];
+  std::vector<double> parts(NSUMS * threads.ranges(nlocal), 0.0);
+  threads.for_ranges(nlocal, [&](int begin, int end, int range) {
+    double *local = &parts[NSUMS * range];
+    for (int i = begin; i < end; i++)
+      if (mask[i] & groupbit) {
+        const double m = inertia[dofs * i];
+        const double *s = &solution[dofs * i];
+        for (int k = 0; k < 3; k++) {
+          local[DEFICIT + k] += m * (*dof_pointer(i, k) - s[k]);
+          local[MOMENTUM + k] += m * s[k];
+        }
+        local[MASS] += m;
+        local[TWICE_KINETIC] += m * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+        local[COMPONENTS] += 3.0;
       }
-      local[MASS] += m;
-      local[TWICE_KINETIC] += m * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-      local[COMPONENTS] += 3.0;
-    }
+  });
+  double local[NSUMS], sums[NSUMS];
+  for (int n = 0; n < NSUMS; n++) local[n] = parts[n];
+  for (std::size_t at = NSUMS; at < parts.size(); at++) local[at % NSUMS] += parts[at];
   MPI_Allreduce(local, sums, NSUMS, MPI_DOUBLE, MPI_SUM, world);
   double shift[3] = {0.0, 0.0, 0.0};
   if (!any_fixed_partner && sums[MASS] > 0.0)
     for (int k = 0; k < 3; k++) shift[k] = sums[DEFICIT + k] / sums[MASS];
-  for (int i = 0; i < nlocal; i++)
-    if (mask[i] & groupbit)
-      for (int k = 0; k < dofs; k++)
-        *dof_pointer(i, k) = solution[dofs * i + k] + (k < 3 ? shift[k] : 0.0);
+  threads.for_ranges(nlocal, [&](int begin, int end, int) {
+    for (int i = begin; i < end; i++)
+      if (mask[i] & groupbit)
+        for (int k = 0; k < dofs; k++)
+          *dof_pointer(i, k) = solution[dofs * i + k] + (k < 3 ? shift[k] : 0.0);
+  });
 
   // The end-of-step velocities that thermo sees carry the splitting's deficit
   // dt^2 <F^2> / (4 m kBT); these, fresh out of the friction step, do not (output 5).

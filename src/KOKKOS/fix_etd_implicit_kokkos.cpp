@@ -14,13 +14,14 @@
 
 using namespace LAMMPS_NS;
 
-// the scheme's own pair search runs its slabs of cells on the host's threads
+// the scheme's own pair search (its slabs of cells) and the step's loops over the atoms run on
+// the host's threads
 template <class DeviceType>
 FixETDImplicitKokkos<DeviceType>::FixETDImplicitKokkos(LAMMPS *lmp, int narg, char **arg) :
     FixETDImplicit(lmp, narg, arg)
 {
-  own.chunks = Kokkos::DefaultHostExecutionSpace().concurrency();
-  own.runner = etd::kk::host_chunk_runner("etd:pair_search");
+  threads.chunks = Kokkos::DefaultHostExecutionSpace().concurrency();
+  threads.runner = etd::kk::host_chunk_runner("etd:host_loops");
 }
 
 template <class DeviceType> void *FixETDImplicitKokkos<DeviceType>::extract(const char *name, int &dim)
