@@ -48,7 +48,7 @@ class CellPairSearch {
     nlocal_ = nlocal;
     nchunks_ = 0;
     if (nlocal > 0) {
-      bin(x, nall, cutoff);
+      bin(x, nall, cutoff, chunks, runner);
       nchunks_ = std::max(1, std::min(runner ? chunks : 1, n_[2]));
       if (static_cast<int>(chunks_.size()) < nchunks_) chunks_.resize(nchunks_);
       const double cutsq = cutoff * cutoff;
@@ -71,8 +71,10 @@ class CellPairSearch {
       found += chunk.first.capacity() + chunk.second.capacity() + chunk.rows.capacity();
     return sizeof(int) *
         (ilist_.capacity() + numneigh_.capacity() + neighbors_.capacity() + start_.capacity() +
-         owned_before_.capacity() + sorted_.capacity() + cell_of_.capacity() + found) +
-        sizeof(int *) * firstneigh_.capacity() + sizeof(double) * sorted_x_.capacity();
+         owned_before_.capacity() + sorted_.capacity() + cell_of_.capacity() + fill_.capacity() +
+         found) +
+        sizeof(int *) * firstneigh_.capacity() +
+        sizeof(double) * (sorted_x_.capacity() + bounds_.capacity());
   }
 
  private:
@@ -84,17 +86,45 @@ class CellPairSearch {
   }
 
   // Cells no smaller than the cutoff over the atoms' bounding box, so that a pair lies in one
-  // cell or two neighbouring ones; atoms and their positions sorted by cell (a counting sort).
-  // A box stretched by a far-away atom gets coarser cells rather than more cells than atoms.
-  void bin(const double *x, int nall, double cutoff)
+  // cell or two neighbouring ones; atoms and their positions sorted by cell (a counting sort, in
+  // ranges of atoms at once with a runner: each range counts its atoms per cell and places them
+  // after the lower ranges' atoms of the same cell, so every cell lists its atoms in index order
+  // whatever the ranges). A box stretched by a far-away atom gets coarser cells rather than
+  // more cells than atoms.
+  void bin(const double *x, int nall, double cutoff, int chunks, const ChunkRunner &runner)
   {
+    const int ranges =
+        (runner && chunks > 1 && nall >= 2 * chunks) ? std::min(chunks, max_bin_ranges) : 1;
+    auto for_each_range = [&](auto body) {
+      auto range = [&](int r) {
+        body(r, static_cast<int>(static_cast<long>(r) * nall / ranges),
+             static_cast<int>(static_cast<long>(r + 1) * nall / ranges));
+      };
+      if (ranges == 1)
+        range(0);
+      else
+        runner(ranges, range);
+    };
+    std::vector<double> &bounds = bounds_;    // per range: lo[3], hi[3]
+    bounds.assign(6 * ranges, 0.0);
+    for_each_range([&](int r, int first, int last) {
+      double *lo = &bounds[6 * r], *hi = lo + 3;
+      for (int k = 0; k < 3; k++) lo[k] = hi[k] = x[3 * first + k];
+      for (int j = first + 1; j < last; j++)
+        for (int k = 0; k < 3; k++) {
+          lo[k] = std::min(lo[k], x[3 * j + k]);
+          hi[k] = std::max(hi[k], x[3 * j + k]);
+        }
+    });
     double lo[3], hi[3];
-    for (int k = 0; k < 3; k++) lo[k] = hi[k] = x[k];
-    for (int j = 1; j < nall; j++)
-      for (int k = 0; k < 3; k++) {
-        lo[k] = std::min(lo[k], x[3 * j + k]);
-        hi[k] = std::max(hi[k], x[3 * j + k]);
+    for (int k = 0; k < 3; k++) {
+      lo[k] = bounds[k];
+      hi[k] = bounds[3 + k];
+      for (int r = 1; r < ranges; r++) {
+        lo[k] = std::min(lo[k], bounds[6 * r + k]);
+        hi[k] = std::max(hi[k], bounds[6 * r + 3 + k]);
       }
+    }
     double size = cutoff > 0.0 ? cutoff : 1.0;
     const double cell_budget = 2.0 * nall + 27.0;
     for (;;) {
@@ -110,28 +140,48 @@ class CellPairSearch {
     }
     const int ncells = n_[0] * n_[1] * n_[2];
     cell_of_.resize(nall);
-    start_.assign(ncells + 1, 0);
-    owned_before_.assign(ncells + 1, 0);
-    const int nlocal = nlocal_;
-    for (int j = 0; j < nall; j++) {
-      int c[3];
-      for (int k = 0; k < 3; k++)
-        c[k] = std::min(n_[k] - 1, static_cast<int>((x[3 * j + k] - lo[k]) * inverse[k]));
-      const int cell = c[0] + n_[0] * (c[1] + n_[1] * c[2]);
-      cell_of_[j] = cell;
-      start_[cell + 1]++;
-      if (j < nlocal) owned_before_[cell + 1]++;
+    // per range and cell: its atoms there, then where the first of them goes
+    fill_.assign(static_cast<std::size_t>(ranges) * ncells, 0);
+    for_each_range([&](int r, int first, int last) {
+      int *count = &fill_[static_cast<std::size_t>(r) * ncells];
+      for (int j = first; j < last; j++) {
+        int c[3];
+        for (int k = 0; k < 3; k++)
+          c[k] = std::min(n_[k] - 1, static_cast<int>((x[3 * j + k] - lo[k]) * inverse[k]));
+        const int cell = c[0] + n_[0] * (c[1] + n_[1] * c[2]);
+        cell_of_[j] = cell;
+        count[cell]++;
+      }
+    });
+    start_.resize(ncells + 1);
+    int placed = 0;
+    for (int c = 0; c < ncells; c++) {
+      start_[c] = placed;
+      for (int r = 0; r < ranges; r++) {
+        int &slot = fill_[static_cast<std::size_t>(r) * ncells + c];
+        const int count = slot;
+        slot = placed;
+        placed += count;
+      }
     }
-    for (int c = 0; c < ncells; c++) start_[c + 1] += start_[c];
-    for (int c = 0; c < ncells; c++) owned_before_[c + 1] += owned_before_[c];
+    start_[ncells] = placed;
     sorted_.resize(nall);
     sorted_x_.resize(3 * static_cast<std::size_t>(nall));
-    // in index order within a cell: the list's order does not depend on the slabs
-    fill_.assign(start_.begin(), start_.end() - 1);
-    for (int j = 0; j < nall; j++) {
-      const int s = fill_[cell_of_[j]]++;
-      sorted_[s] = j;
-      for (int k = 0; k < 3; k++) sorted_x_[3 * s + k] = x[3 * j + k];
+    for_each_range([&](int r, int first, int last) {
+      int *slot = &fill_[static_cast<std::size_t>(r) * ncells];
+      for (int j = first; j < last; j++) {
+        const int s = slot[cell_of_[j]]++;
+        sorted_[s] = j;
+        for (int k = 0; k < 3; k++) sorted_x_[3 * s + k] = x[3 * j + k];
+      }
+    });
+    // the owned atoms in the cells before each (owned atoms come first in a cell: index order)
+    owned_before_.resize(ncells + 1);
+    owned_before_[0] = 0;
+    for (int c = 0; c < ncells; c++) {
+      int owned = start_[c];
+      while (owned < start_[c + 1] && sorted_[owned] < nlocal_) owned++;
+      owned_before_[c + 1] = owned_before_[c] + (owned - start_[c]);
     }
   }
 
@@ -287,6 +337,8 @@ class CellPairSearch {
   int n_[3] = {1, 1, 1};
   // owned_before_: per cell, the owned atoms in the cells before it
   std::vector<int> cell_of_, start_, owned_before_, sorted_, fill_;
+  std::vector<double> bounds_;
+  static constexpr int max_bin_ranges = 16;    // (each range counts over all cells)
   std::vector<double> sorted_x_;
   std::vector<Found> chunks_;    // the pairs each slab found; nchunks_ of them this search
   int nchunks_ = 0;
