@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Builds of the plugin side by side on the implicit-scheme set-ups of run.sh (in.kokkos_throughput,
+# GW m = 0.01, dt = 0.005, 24,000 atoms): for each variant, fix etd/kk on 1 rank with 2 threads,
+# and fix etd on 2 ranks, alternated round after round so that the machine's slow spells fall on
+# all of them alike. Prints every run and, per variant and set-up, the median and the range, and
+# each round's ratio (2 ranks / 2 threads of the same variant).
+#   KOKKOS_SOURCE=... ETD_DPD_LAMMPS=trixie bash bench/kokkos/alternate.sh ROUNDS STEPS A.so B.so ...
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+root=$(cd "$here/../.." && pwd)
+if [ $# -lt 3 ]; then
+  echo "usage: bash bench/kokkos/alternate.sh ROUNDS STEPS PLUGIN.so ..." >&2
+  exit 2
+fi
+rounds=$1 steps=$2
+shift 2
+prefix=$(bash "$root/tools/kokkos/build_lammps_kokkos.sh" | sed -n 's/^LAMMPS_KOKKOS_PREFIX=//p')
+lmp="$prefix/bin/lmp"
+mpi=(mpirun --oversubscribe); [ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root)
+export OMP_PROC_BIND=false
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+loop_time() { awk '/^BENCH/{b=1} b&&/^Loop time/{print $4; exit}' "$work/log"; }
+for round in $(seq "$rounds"); do
+  for plugin in "$@"; do
+    plugin=$(cd "$(dirname "$plugin")" && pwd)/$(basename "$plugin")
+    args=(-in "$here/in.kokkos_throughput" -var plugin "$plugin" -var pair dpd/gen -var steps "$steps"
+          -var integrator implicit -var dt 0.005 -log "$work/log" -screen none)
+    "${mpi[@]}" --bind-to none -np 1 "$lmp" "${args[@]}" -k on t 2 -sf kk
+    threads=$(loop_time)
+    "${mpi[@]}" -np 2 "$lmp" "${args[@]}"
+    ranks=$(loop_time)
+    echo "$round $plugin $threads $ranks" | tee -a "$work/times" |
+      awk '{printf "round %d %s: 2 threads %.3f s, 2 ranks %.3f s, ratio %.3f\n", $1, $2, $3, $4, $4 / $3}'
+  done
+done
+for plugin in "$@"; do
+  plugin=$(cd "$(dirname "$plugin")" && pwd)/$(basename "$plugin")
+  awk -v v="$plugin" '$2 == v {print $3, $4, $4 / $3}' "$work/times" | /usr/bin/python3 -c '
+import statistics, sys
+rows = [list(map(float, line.split())) for line in sys.stdin]
+name = sys.argv[1]
+for k, what in enumerate(("2 threads (s)", "2 ranks (s)", "ratio")):
+    col = [r[k] for r in rows]
+    print(f"{name}: {what}: median {statistics.median(col):.3f}, range {min(col):.3f}-{max(col):.3f} (n = {len(col)})")
+' "$plugin"
+done
