@@ -101,6 +101,8 @@ template <class DeviceType> class FrictionPairsKokkos {
     // on, how many it has, and whether one has an atom outside the group
     kk::grow(pair_start_, in.inum + 1);
     staged_.grow(ncandidates, moving_images_);
+    kk::grow(staged_tag_j_, ncandidates);
+    auto staged_tag_j = staged_tag_j_;
     auto pair_start = pair_start_;
     const PairArrays staged = staged_;
     const bool moving = moving_images_;
@@ -126,7 +128,8 @@ template <class DeviceType> class FrictionPairsKokkos {
             staged.partner(at) = partner;
             for (int k = 0; k < 3; k++) staged.geometry(at, k) = static_cast<float>(d[k] * inv_r);
             staged.geometry(at, 3) = static_cast<float>(dissipation.friction);
-            staged.noise(at) = dissipation.noise * noise.gaussian(tags(i), tags(j), step);
+            staged.noise(at) = dissipation.noise;    // (its Gaussian as the pairs are packed)
+            staged_tag_j(at) = tags(j);
             staged.distance(at) = r;
             if (moving) {
               // (as PartnerMap::image_velocity adds it: zero for an owned atom)
@@ -158,14 +161,18 @@ template <class DeviceType> class FrictionPairsKokkos {
     auto pair_i = pair_i_;
     const PairArrays packed = packed_;
     auto ilist = ilist_;
-    // the pairs moved together, in the list's order
+    // the pairs moved together, in the list's order, each noise amplitude times its Gaussian (a
+    // pass of its own, as the host assembly draws them: the pass above, without the generator,
+    // overlaps the square roots of successive pairs)
     Kokkos::parallel_for(
         "etd:pairs_pack", Kokkos::RangePolicy<execution_space>(0, in.inum),
         KOKKOS_LAMBDA(const int ii) {
           const int i = ilist(ii);
+          const std::int64_t tag_i = tags(i);
           for (int to = pair_start(ii), at = candidate_start(ii); to < pair_start(ii + 1); to++, at++) {
             pair_i(to) = i;
             packed.copy(to, staged, at, moving);
+            packed.noise(to) = staged.noise(at) * noise.gaussian(tag_i, staged_tag_j(at), step);
           }
         });
     return fixed > 0;    // (Max starts from the lowest int, where no atom is listed)
@@ -317,6 +324,7 @@ template <class DeviceType> class FrictionPairsKokkos {
   Indices pair_start_, pair_i_;
   PairArrays packed_;    // the step's pairs, in the list's order
   PairArrays staged_;    // the pairs at their atoms' candidate slots, before they are packed
+  Tags staged_tag_j_;    // and their j's atom IDs (the noise's key with i's)
 
   Candidates candidates_of(const Input &in) const
   {
