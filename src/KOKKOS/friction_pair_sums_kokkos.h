@@ -204,6 +204,10 @@ template <class DeviceType> class PairSumsKokkos {
         KOKKOS_LAMBDA(const int t) {
           double *copy = blocks.copy(t);
           const double *given = u.data();
+          // (locals: the stores into copy could alias the lambda's captured doubles, which
+          // would then be loaded again for every pair)
+          const double scale = weight, root = root_h;
+          const int owned = nowned;
           const int last = blocks.first_run(t + 1);
           for (int r = blocks.first_run(t); r < last; r++) {
             const int i = blocks.run_atom(r);
@@ -212,25 +216,25 @@ template <class DeviceType> class PairSumsKokkos {
             for (int p = blocks.run_start(r); p < blocks.run_start(r + 1); p++) {
               const int j = blocks.partner(p);
               const double e0 = geometry(p, 0), e1 = geometry(p, 1), e2 = geometry(p, 2);
-              const double projected = weight * geometry(p, 3) *
+              const double projected = scale * geometry(p, 3) *
                   (e0 * (ui0 - given[3 * j]) + e1 * (ui1 - given[3 * j + 1]) +
                    e2 * (ui2 - given[3 * j + 2]));
               const double f0 = projected * e0, f1 = projected * e1, f2 = projected * e2;
               sum0 += f0;
               sum1 += f1;
               sum2 += f2;
-              if (j < nowned) {
+              if (j < owned) {
                 copy[Width * j] -= f0;
                 copy[Width * j + 1] -= f1;
                 copy[Width * j + 2] -= f2;
               }
               if (Width == 6) {    // (not if constexpr: CUDA lambdas may not first capture there)
-                const double amount = root_h * noise(p);
+                const double amount = root * noise(p);
                 const double k0 = amount * e0, k1 = amount * e1, k2 = amount * e2;
                 kick0 += k0;
                 kick1 += k1;
                 kick2 += k2;
-                if (j < nowned) {
+                if (j < owned) {
                   copy[6 * j + 3] -= k0;
                   copy[6 * j + 4] -= k1;
                   copy[6 * j + 5] -= k2;
