@@ -95,21 +95,23 @@ void PartnerMap::find(LAMMPS *lmp, Fix *fix, const PairListView &list, GhostExch
   };
   std::vector<Remote> remote;
   constexpr int unused = -1, remote_mark = -2;
-  ghost_partner_.assign(nghost, unused);
-  for (int ii = 0; ii < list.inum; ii++) {
+  // a ghost of an atom of this rank stands for that atom (whether the list uses it or not);
+  // the others, images of remote atoms, take slots only where the list uses them
+  ghost_partner_.resize(nghost);
+  bool any_remote = false;
+  for (int g = 0; g < nghost; g++) {
+    const bool mine = static_cast<int>(owner_[2 * (nlocal + g)]) == me;
+    ghost_partner_[g] = mine ? static_cast<int>(owner_[2 * (nlocal + g) + 1]) : unused;
+    any_remote = any_remote || !mine;
+  }
+  for (int ii = 0; any_remote && ii < list.inum; ii++) {
     const int i = list.ilist[ii];
     const int *jlist = list.firstneigh[i];
     for (int jj = 0; jj < list.numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       if (j < nlocal || ghost_partner_[j - nlocal] != unused) continue;
-      const int rank = static_cast<int>(owner_[2 * j]);
-      const int index = static_cast<int>(owner_[2 * j + 1]);
-      if (rank == me) {
-        ghost_partner_[j - nlocal] = index;
-      } else {
-        ghost_partner_[j - nlocal] = remote_mark;
-        remote.push_back({rank, index, j});
-      }
+      ghost_partner_[j - nlocal] = remote_mark;
+      remote.push_back({static_cast<int>(owner_[2 * j]), static_cast<int>(owner_[2 * j + 1]), j});
     }
   }
   // slots grouped by owner; several images of one remote atom share its slot

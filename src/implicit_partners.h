@@ -52,7 +52,8 @@ class GhostExchange {
 class PartnerMap {
  public:
   explicit PartnerMap(MPI_Comm world) : exchange_(new PartnerExchange(world)) {}
-  // Which partner each ghost the list uses stands for; once per list (ghosts are renumbered
+  // Which partner each ghost stands for: every image of an atom of this rank, and the images of
+  // remote atoms that the list uses (slots); once per list (ghosts are renumbered
   // only at LAMMPS's reneighboring, but the scheme's own search lists other ghosts each step);
   // collective.
   void find(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::Fix *fix, const PairListView &list,
@@ -84,6 +85,7 @@ class PartnerMap {
   std::unique_ptr<PartnerExchange> exchange_;
   LAMMPS_NS::bigint built_ = -1;      // neighbor->ncalls of the list they were found from
   std::vector<int> ghost_partner_;    // per ghost (index - nlocal): its partner index, or -1
+                                      // (a remote atom's image the list does not use)
   std::vector<int> slot_ghost_;       // per slot: one ghost that is an image of it
   std::vector<double> owner_;         // per atom: owner rank and index
   std::vector<double> image_;         // per atom: its count of box vectors (pbc) from its owner
