@@ -52,11 +52,11 @@ class CellPairSearch {
       nchunks_ = std::max(1, std::min(runner ? chunks : 1, n_[2]));
       if (static_cast<int>(chunks_.size()) < nchunks_) chunks_.resize(nchunks_);
       const double cutsq = cutoff * cutoff;
-      for_each_chunk(runner, [this, cutsq](int k) {
-        collect(chunks_[k], k * n_[2] / nchunks_, (k + 1) * n_[2] / nchunks_, cutsq);
+      for_each_chunk(runner, [this, cutsq, newton_off](int k) {
+        collect(chunks_[k], k * n_[2] / nchunks_, (k + 1) * n_[2] / nchunks_, cutsq, newton_off);
       });
     }
-    index(x, nlocal, newton_off, runner);
+    index(nlocal, runner);
   }
 
   PairListView view() const
@@ -185,12 +185,12 @@ class CellPairSearch {
     }
   }
 
-  // The pairs one slab of cells found: `found` of them, as positions in sorted_ (both written
-  // ahead of the count); once indexed, the `kept` ones as atom indices, oriented, and per owned
-  // atom its count of them, then where the slab's entries of its row go
+  // The pairs one slab of cells found: `found` of them, as atom indices, oriented (both
+  // written ahead of the count), and per owned atom its count of them, then (index()) where the
+  // slab's entries of its row go
   struct Found {
     std::vector<int> first, second, rows;
-    std::size_t found = 0, kept = 0;
+    std::size_t found = 0;
   };
 
   // body(k) for each of this search's slabs: by the runner where there are several
@@ -208,11 +208,13 @@ class CellPairSearch {
   // next plane). Cells along x are contiguous in the sorted order, so an atom's candidates are
   // five ranges rather than fourteen cells of a few atoms each. A ghost's ranges without owned
   // atoms are skipped. (Cells of half the cutoff, with their larger stencil, cost twice as much
-  // here: measured at 3,000 atoms.)
-  void collect(Found &out, int z0, int z1, double cutsq) const
+  // here: measured at 3,000 atoms.) Each atom's pairs are then oriented and kept or not
+  // (orient()) while they are in cache.
+  void collect(Found &out, int z0, int z1, double cutsq, bool newton_off) const
   {
     const int nx = n_[0], ny = n_[1], nz = n_[2];
     out.found = 0;
+    out.rows.assign(nlocal_, 0);
     for (int cz = z0; cz < z1; cz++)
       for (int cy = 0; cy < ny; cy++)
         for (int cx = 0; cx < nx; cx++) {
@@ -252,9 +254,36 @@ class CellPairSearch {
               for (int r = 0; r < nrows; r++)
                 if (rows[r].owned) scan<false>(out, a, rows[r].first, rows[r].last, cutsq);
             }
-            std::fill(out.first.begin() + begin, out.first.begin() + out.found, a);
+            orient(out, a, begin, newton_off);
           }
         }
+  }
+
+  // The pairs of atom a (sorted position) from out's entry begin on, as atom indices: oriented
+  // (owned atom first, the lower index of two owned ones) and kept or not by the newton
+  // setting, each counted in its first atom's row
+  void orient(Found &out, int a, std::size_t begin, bool newton_off) const
+  {
+    const double *xs = sorted_x_.data();
+    const int atom_a = sorted_[a];
+    std::size_t kept = begin;
+    for (std::size_t p = begin; p < out.found; p++) {
+      int sa = a, sb = out.second[p];
+      int i = atom_a, j = sorted_[sb];
+      if (i >= nlocal_ || (j < nlocal_ && j < i)) {
+        std::swap(i, j);
+        std::swap(sa, sb);
+      }
+      if (j >= nlocal_ && !newton_off &&
+          !above(xs[3 * sb] - xs[3 * sa], xs[3 * sb + 1] - xs[3 * sa + 1],
+                 xs[3 * sb + 2] - xs[3 * sa + 2]))
+        continue;
+      out.first[kept] = i;
+      out.second[kept] = j;
+      kept++;
+      out.rows[i]++;
+    }
+    out.found = kept;
   }
 
   struct Range {
@@ -282,31 +311,13 @@ class CellPairSearch {
     out.found += kept;
   }
 
-  // Each pair oriented (owned atom first, the lower index of two owned ones), kept or not by
-  // the newton setting, and sorted by its first atom into the list's rows: each row holds the
-  // first slab's entries, then the next slab's, each in the order found (the order one slab of
-  // all cells gives).
-  void index(const double *x, int nlocal, bool newton_off, const ChunkRunner &runner)
+  // The slabs' pairs sorted by their first atoms into the list's rows: each row holds the first
+  // slab's entries, then the next slab's, each in the order found (the order one slab of all
+  // cells gives).
+  void index(int nlocal, const ChunkRunner &runner)
   {
     ilist_.resize(nlocal);
     for (int i = 0; i < nlocal; i++) ilist_[i] = i;
-    for_each_chunk(runner, [&](int k) {
-      Found &chunk = chunks_[k];
-      chunk.rows.assign(nlocal, 0);
-      std::size_t kept = 0;
-      for (std::size_t p = 0; p < chunk.found; p++) {
-        int i = sorted_[chunk.first[p]], j = sorted_[chunk.second[p]];
-        if (i >= nlocal || (j < nlocal && j < i)) std::swap(i, j);
-        if (j >= nlocal && !newton_off &&
-            !above(x[3 * j] - x[3 * i], x[3 * j + 1] - x[3 * i + 1], x[3 * j + 2] - x[3 * i + 2]))
-          continue;
-        chunk.first[kept] = i;
-        chunk.second[kept] = j;
-        kept++;
-        chunk.rows[i]++;
-      }
-      chunk.kept = kept;
-    });
     // where each row starts, and each slab's part of it
     numneigh_.assign(nlocal, 0);
     std::size_t offset = 0;
@@ -328,7 +339,7 @@ class CellPairSearch {
     }
     for_each_chunk(runner, [&](int k) {
       Found &chunk = chunks_[k];
-      for (std::size_t p = 0; p < chunk.kept; p++)
+      for (std::size_t p = 0; p < chunk.found; p++)
         neighbors_[chunk.rows[chunk.first[p]]++] = chunk.second[p];
     });
   }
