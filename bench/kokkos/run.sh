@@ -40,6 +40,9 @@ out="$here/results/throughput.jsonl"
 : >"$out"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# the two cores' cost of sharing data (sharing_probe.cpp), read just before each threaded run
+# of the implicit scheme: its two states on this kind of machine decide that run's speed
+g++ -O2 -fopenmp "$here/sharing_probe.cpp" -o "$work/sharing_probe"
 for round in $(seq "$rounds"); do
   for setup in "${setups[@]}"; do
     IFS='|' read -r name ranks threads pair integrator <<<"$setup"
@@ -50,13 +53,16 @@ for round in $(seq "$rounds"); do
     [ "$integrator" = implicit ] && args+=(-var dt 0.005)
     [ "$threads" != 0 ] && args+=(-k on t "$threads" -sf kk)
     [ "$threads" -gt 1 ] && bind=(--bind-to none)
+    sharing=null
+    [ "$threads" -gt 1 ] && [ "$integrator" = implicit ] &&
+      sharing=$("$work/sharing_probe" | awk '/split differently +2 thread/{print $5}')
     "${mpi[@]}" "${bind[@]}" -np "$ranks" "$lmp" "${args[@]}"
     loop=$(awk '/^BENCH/{b=1} b&&/^Loop time/{print $4; exit}' "$work/log")
     # (the pair style's list: perpetual, or occasional where fix etd's own search feeds it)
     style=$(awk '/^BENCH/{b=1} /pair [a-z\/]+, (perpetual|occasional)/{s=$3} END{print s}' "$work/log")
     lammps=$(sed -n '1s/^LAMMPS (\(.*\))$/\1/p' "$work/log")
-    printf '{"round": %d, "setup": "%s", "pair_style": "%s", "integrator": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "loop_s": %s, "lammps": "%s", "cores": %d}\n' \
-      "$round" "$name" "${style%,}" "$integrator" "$ranks" "$threads" "$steps" "$loop" "$lammps" "$(nproc)" | tee -a "$out"
+    printf '{"round": %d, "setup": "%s", "pair_style": "%s", "integrator": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "loop_s": %s, "lammps": "%s", "cores": %d, "sharing_ms": %s}\n' \
+      "$round" "$name" "${style%,}" "$integrator" "$ranks" "$threads" "$steps" "$loop" "$lammps" "$(nproc)" "$sharing" | tee -a "$out"
   done
 done
 /usr/bin/python3 "$here/table.py" "$out" | tee "$here/results/throughput.md"
