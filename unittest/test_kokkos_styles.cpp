@@ -71,6 +71,7 @@ double max_rel_diff(const std::vector<double> &a, const std::vector<double> &b)
 struct Snapshot {
   std::vector<double> x, v, f, virial;
   double pe;
+  double friction_temperature = 0.0;    // fix etd scheme implicit: its output 5
 };
 
 Snapshot snapshot(Lammps &l)
@@ -139,6 +140,9 @@ Pair run_both(const std::vector<std::string> &pair, const std::vector<std::strin
     l.cmds(run);
     EXPECT_EQ(pair_style_of(l), kokkos ? "dpd/gen/kk" : "dpd/gen");
     (kokkos ? out.kk : out.cpu) = snapshot(l);
+    for (const std::string &command : run)
+      if (command.find("scheme implicit") != std::string::npos)
+        (kokkos ? out.kk : out.cpu).friction_temperature = l.fix_vector("integrate", 4);
     if (kokkos) out.kernel = pair_ran_kernel(l);
     if (kokkos) out.fix_kernel = fix_ran_kernel(l);
     if (kokkos) out.kernel_solves = kernel_solves(l);
@@ -200,8 +204,14 @@ TEST(KokkosStyles, TrajectoriesFollowTheCpuStyle)
       // (the pairs, their noise and the right-hand side too; at the last step, which tallies
       // the virial, the pairs are also copied back to the host, which sums it)
       EXPECT_EQ(p.kernel_assemblies > 0.0, c.solve_kernel) << c.fix;
-      if (c.solve_kernel)
+      if (c.solve_kernel) {
         EXPECT_LT(max_rel_diff(p.kk.virial, p.cpu.virial), 1e-6) << c.fix << ", " << pair.back();
+        // (the momentum correction's sums over the atoms, on the host's threads in ranges)
+        EXPECT_GT(p.cpu.friction_temperature, 0.5) << c.fix;
+        EXPECT_NEAR(p.kk.friction_temperature, p.cpu.friction_temperature,
+                    1e-8 * p.cpu.friction_temperature)
+            << c.fix << ", " << pair.back();
+      }
       EXPECT_LT(max_rel_diff(p.kk.x, p.cpu.x), 1e-8) << c.fix << ", " << pair.back();
       EXPECT_LT(max_rel_diff(p.kk.v, p.cpu.v), 1e-8) << c.fix << ", " << pair.back();
       // the velocities moved far from their start (else the comparison would prove nothing)
