@@ -40,8 +40,8 @@ out="$here/results/throughput.jsonl"
 : >"$out"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# the two cores' cost of sharing data (sharing_probe.cpp), read just before each threaded run
-# of the implicit scheme: its two states on this kind of machine decide that run's speed
+# the two cores' cost of sharing data (sharing_probe.cpp), read just before each run on 2 or more
+# threads: its two states on this kind of machine decide that run's speed
 g++ -O2 -fopenmp "$here/sharing_probe.cpp" -o "$work/sharing_probe"
 for round in $(seq "$rounds"); do
   for setup in "${setups[@]}"; do
@@ -54,7 +54,7 @@ for round in $(seq "$rounds"); do
     [ "$threads" != 0 ] && args+=(-k on t "$threads" -sf kk)
     [ "$threads" -gt 1 ] && bind=(--bind-to none)
     sharing=null
-    [ "$threads" -gt 1 ] && [ "$integrator" = implicit ] &&
+    [ "$threads" -gt 1 ] &&
       sharing=$("$work/sharing_probe" | awk '/split differently +2 thread/{print $5}')
     "${mpi[@]}" "${bind[@]}" -np "$ranks" "$lmp" "${args[@]}"
     loop=$(awk '/^BENCH/{b=1} b&&/^Loop time/{print $4; exit}' "$work/log")
