@@ -248,6 +248,9 @@ template <class DeviceType> class FrictionPairsKokkos {
     // pair(i, j, partner, d = x_i - x_j, rsq, special factor, held: an atom outside the group)
     // for each friction pair of listed atom ii, in the list's order (j: the atom or its ghost
     // image, partner: the partner index it stands for)
+    // The candidates within the largest cutoff are gathered first, in chunks, with the count
+    // advanced by the test's result and no branch (close_neighbors.h: the margin of the list
+    // holds a fair share of them), then the work is done on those alone, in the list's order.
     template <class Pair> KOKKOS_INLINE_FUNCTION void visit(int ii, Pair pair) const
     {
       const int i = ilist(ii);
@@ -255,26 +258,42 @@ template <class DeviceType> class FrictionPairsKokkos {
       const double xi0 = x(3 * i), xi1 = x(3 * i + 1), xi2 = x(3 * i + 2);
       const int first = in_place ? 0 : list_start(ii);
       const int last = in_place ? numneigh[i] : list_start(ii + 1);
-      for (int n = first; n < last; n++) {
-        const int j_bits = in_place ? firstneigh[i][n] : list(n);
-        const int j = j_bits & neighbor_mask;
-        const double d[3] = {xi0 - x(3 * j), xi1 - x(3 * j + 1), xi2 - x(3 * j + 2)};
-        const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-        if (!(rsq < cutsq_max)) continue;
-        const double factor = special[(j_bits >> special_shift) & 3];
-        if (factor == 0.0) continue;
-        int partner = j;
-        if (j >= nlocal) {
-          partner = ghost_partner(j - nlocal);
-          if (partner < nlocal && newton_off && tag(i) >= tag(partner)) continue;
+      constexpr int CHUNK = 64;
+      int close[CHUNK];
+      for (int start = first; start < last; start += CHUNK) {
+        const int end = start + CHUNK < last ? start + CHUNK : last;
+        int nclose = 0;
+        for (int n = start; n < end; n++) {
+          const int j_bits = in_place ? firstneigh[i][n] : list(n);
+          const int j = j_bits & neighbor_mask;
+          const double d0 = xi0 - x(3 * j), d1 = xi1 - x(3 * j + 1), d2 = xi2 - x(3 * j + 2);
+          close[nclose] = j_bits;
+          nclose += (d0 * d0 + d1 * d1 + d2 * d2 < cutsq_max) ? 1 : 0;
         }
-        const bool j_mobile = (mask(j) & groupbit) != 0;
-        if (!i_mobile && !j_mobile) continue;
-        const int k = type(i) * ntypes1 + type(j);
-        if (!present(k)) continue;
-        if (rsq >= table(k).rcsq_d || rsq == 0.0) continue;
-        pair(i, j, partner, d, rsq, factor, !i_mobile || !j_mobile);
+        for (int c = 0; c < nclose; c++) visit_close(i, i_mobile, xi0, xi1, xi2, close[c], pair);
       }
+    }
+    // the tests after the distance's, and pair(), for one gathered candidate
+    template <class Pair>
+    KOKKOS_INLINE_FUNCTION void visit_close(int i, bool i_mobile, double xi0, double xi1,
+                                            double xi2, int j_bits, Pair &pair) const
+    {
+      const int j = j_bits & neighbor_mask;
+      const double d[3] = {xi0 - x(3 * j), xi1 - x(3 * j + 1), xi2 - x(3 * j + 2)};
+      const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      const double factor = special[(j_bits >> special_shift) & 3];
+      if (factor == 0.0) return;
+      int partner = j;
+      if (j >= nlocal) {
+        partner = ghost_partner(j - nlocal);
+        if (partner < nlocal && newton_off && tag(i) >= tag(partner)) return;
+      }
+      const bool j_mobile = (mask(j) & groupbit) != 0;
+      if (!i_mobile && !j_mobile) return;
+      const int k = type(i) * ntypes1 + type(j);
+      if (!present(k)) return;
+      if (rsq >= table(k).rcsq_d || rsq == 0.0) return;
+      pair(i, j, partner, d, rsq, factor, !i_mobile || !j_mobile);
     }
   };
 
