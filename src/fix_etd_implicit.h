@@ -79,28 +79,10 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator, public etd
     double cutoff = 0.0;              // the largest cutoff of the pair style and the friction
     double margin = 0.0;              // searched out to cutoff + margin
   } own;
-  // Who runs the search's slabs and the per-atom loops of the step: `chunks` at once by
-  // `runner` (the KOKKOS variant: its host threads); here one, in place. Reductions over the
-  // atoms add each chunk's part in chunk order, so one chunk sums as a plain loop does.
-  struct HostThreads {
-    int chunks = 1;
-    etd::CellPairSearch::ChunkRunner runner;
-    // how many ranges for_ranges() splits n atoms into
-    int ranges(int n) const { return (runner && chunks > 1 && n >= 2 * chunks) ? chunks : 1; }
-    // body(begin, end, range) for the ranges(n) ranges of [0, n), at once where there are several
-    template <class Body> void for_ranges(int n, Body &&body) const
-    {
-      const int count = ranges(n);
-      if (count == 1) {
-        body(0, n, 0);
-        return;
-      }
-      runner(count, [&](int c) {
-        body(static_cast<int>(static_cast<long>(c) * n / count),
-             static_cast<int>(static_cast<long>(c + 1) * n / count), c);
-      });
-    }
-  } threads;
+  // Who runs the search's slabs and the step's loops over the atoms: `chunks` at once by
+  // `runner` (the KOKKOS variant: its host threads); here one, in place, so that the CPU fix's
+  // sums are those of plain loops
+  etd::ParallelRanges threads;
   const char *own_pairs_unsupported() const;
   bool own_pairs_pay() const;    // the default's choice: the search's cells stay sparse
   void search_own_pairs(double margin);

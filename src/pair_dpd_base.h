@@ -186,8 +186,6 @@ void PairDPDBase::eval_with_extras(const typename Law::Coefficients *table, int 
   }
 }
 
-// DISSIPATIVE = 0: only the law's conservative force, which is central and makes no torque:
-// what fix etd's implicit scheme leaves to the pair style (it applies friction and noise).
 // The conservative-only loop in chunks of rows at once, each into forces of its own over all
 // atoms (ghosts too where newton is on), then summed into f chunk after chunk, atoms split
 // among the chunks
@@ -213,6 +211,8 @@ void PairDPDBase::eval_conservative_in_chunks(const typename Law::Coefficients *
   });
 }
 
+// DISSIPATIVE = 0: only the law's conservative force, which is central and makes no torque:
+// what fix etd's implicit scheme leaves to the pair style (it applies friction and noise).
 template <class Law, int EVFLAG, int FRICTION, int SPLIT, int DISSIPATIVE>
 void PairDPDBase::eval(const typename Law::Coefficients *table, int stride, int first_row,
                        int last_row, double *forces, std::vector<int> *close)

@@ -29,10 +29,35 @@ template <typename List> inline PairListView view_of(const List &list)
   return {list.inum, list.ilist, list.numneigh, list.firstneigh};
 }
 
+// Runs body(k) for every k in [0, n), in any order, possibly at the same time (threads)
+using ChunkRunner = std::function<void(int n, const std::function<void(int)> &body)>;
+
+// Loops over [0, n) in up to `chunks` ranges run at once by `runner` (host threads); one range,
+// run in place, without a runner or where n is small. A reduction that adds each range's part
+// in range order sums as a plain loop does when there is one range.
+struct ParallelRanges {
+  int chunks = 1;
+  ChunkRunner runner;
+  // how many ranges for_ranges() splits n into
+  int ranges(int n) const { return (runner && chunks > 1 && n >= 2 * chunks) ? chunks : 1; }
+  // body(begin, end, range) for the ranges(n) ranges of [0, n)
+  template <class Body> void for_ranges(int n, Body &&body) const
+  {
+    const int count = ranges(n);
+    if (count == 1) {
+      body(0, n, 0);
+      return;
+    }
+    runner(count, [&](int c) {
+      body(static_cast<int>(static_cast<long>(c) * n / count),
+           static_cast<int>(static_cast<long>(c + 1) * n / count), c);
+    });
+  }
+};
+
 class CellPairSearch {
  public:
-  // Runs body(k) for every k in [0, n), in any order, possibly at the same time (threads)
-  using ChunkRunner = std::function<void(int n, const std::function<void(int)> &body)>;
+  using ChunkRunner = etd::ChunkRunner;
 
   // Every pair (i, j) with i < nlocal, j < nall and |x_i - x_j| < cutoff (x: nall rows of 3):
   //  - two owned atoms, once, listed from the lower index;
@@ -93,21 +118,11 @@ class CellPairSearch {
   // more cells than atoms.
   void bin(const double *x, int nall, double cutoff, int chunks, const ChunkRunner &runner)
   {
-    const int ranges =
-        (runner && chunks > 1 && nall >= 2 * chunks) ? std::min(chunks, max_bin_ranges) : 1;
-    auto for_each_range = [&](auto body) {
-      auto range = [&](int r) {
-        body(r, static_cast<int>(static_cast<long>(r) * nall / ranges),
-             static_cast<int>(static_cast<long>(r + 1) * nall / ranges));
-      };
-      if (ranges == 1)
-        range(0);
-      else
-        runner(ranges, range);
-    };
+    const ParallelRanges split{std::min(chunks, max_bin_ranges), runner};
+    const int ranges = split.ranges(nall);
     std::vector<double> &bounds = bounds_;    // per range: lo[3], hi[3]
     bounds.assign(6 * ranges, 0.0);
-    for_each_range([&](int r, int first, int last) {
+    split.for_ranges(nall, [&](int first, int last, int r) {
       double *lo = &bounds[6 * r], *hi = lo + 3;
       for (int k = 0; k < 3; k++) lo[k] = hi[k] = x[3 * first + k];
       for (int j = first + 1; j < last; j++)
@@ -142,7 +157,7 @@ class CellPairSearch {
     cell_of_.resize(nall);
     // per range and cell: its atoms there, then where the first of them goes
     fill_.assign(static_cast<std::size_t>(ranges) * ncells, 0);
-    for_each_range([&](int r, int first, int last) {
+    split.for_ranges(nall, [&](int first, int last, int r) {
       int *count = &fill_[static_cast<std::size_t>(r) * ncells];
       for (int j = first; j < last; j++) {
         int c[3];
@@ -167,7 +182,7 @@ class CellPairSearch {
     start_[ncells] = placed;
     sorted_.resize(nall);
     sorted_x_.resize(3 * static_cast<std::size_t>(nall));
-    for_each_range([&](int r, int first, int last) {
+    split.for_ranges(nall, [&](int first, int last, int r) {
       int *slot = &fill_[static_cast<std::size_t>(r) * ncells];
       for (int j = first; j < last; j++) {
         const int s = slot[cell_of_[j]]++;
