@@ -36,7 +36,8 @@ std::vector<std::string> kokkos_args()
   const char *gpus = std::getenv("ETD_KOKKOS_GPUS");    // a CUDA Kokkos: -k on g N
   std::vector<std::string> args = {"-k", "on", "t", threads ? threads : "1", "-sf", "kk"};
   if (!gpus) return args;
-  // on a GPU LAMMPS defaults to full lists and newton off; dpd/gen/kk needs half lists, newton on
+  // a GPU defaults to full lists and newton off; the tests compare with the CPU styles' default,
+  // newton on (NewtonOffAndFullListSettingsFollowTheCpuStyle takes the GPU's defaults)
   args.insert(args.begin() + 2, {"g", gpus});
   args.insert(args.end(), {"-pk", "kokkos", "neigh", "half", "newton", "on"});
   return args;
@@ -128,13 +129,22 @@ struct Pair {
   double kernel_solves = 0.0;     // fix etd/kk scheme implicit: its solves in Kokkos kernels
   double kernel_assemblies = 0.0;    // and its pair assemblies
 };
+// package: more command-line words for the /kk instance (-pk kokkos ...); newton_off: the CPU
+// instance runs with newton off too
 Pair run_both(const std::vector<std::string> &pair, const std::vector<std::string> &run,
-              double mass = 1.0, double dt = 0.01)
+              double mass = 1.0, double dt = 0.01, const std::vector<std::string> &package = {},
+              bool newton_off = false)
 {
   Pair out;
   for (bool kokkos : {false, true}) {
-    Lammps l(MPI_COMM_WORLD, true, kokkos ? kokkos_args() : std::vector<std::string>{});
+    std::vector<std::string> args;
+    if (kokkos) {
+      args = kokkos_args();
+      args.insert(args.end(), package.begin(), package.end());
+    }
+    Lammps l(MPI_COMM_WORLD, true, args);
     setup_box(l, mass, dt);
+    if (newton_off && !kokkos) l.cmd("newton off on");    // (pair off; bond as set)
     l.cmds(pair);
     if (!kokkos) out.start_v = l.gather("v");
     l.cmds(run);
@@ -160,6 +170,30 @@ TEST(KokkosStyles, ForcesEnergyAndVirialEqualTheCpuStyle)
     EXPECT_LT(max_rel_diff(p.kk.f, p.cpu.f), 1e-12) << pair.back();
     EXPECT_LT(max_rel_diff(p.kk.virial, p.cpu.virial), 1e-12) << pair.back();
     EXPECT_NEAR(p.kk.pe, p.cpu.pe, 1e-12 * std::fabs(p.cpu.pe)) << pair.back();
+  }
+}
+
+// Under newton off (with neigh full, a GPU's defaults) a pair with a ghost is computed on both
+// sides, each for its own atom, and counts half in energy and virial: as the CPU style with
+// newton off. Counting such a pair whole, or adding to the ghost, moves the energy and virial.
+TEST(KokkosStyles, NewtonOffAndFullListSettingsFollowTheCpuStyle)
+{
+  for (const std::string neigh : {"full", "half"}) {
+    const std::vector<std::string> package = {"-pk", "kokkos", "neigh", neigh, "newton", "off"};
+    for (const auto &pair : {GEN_S2, GEN_MIXED}) {
+      const Pair p = run_both(pair, {"run 0 post no"}, 1.0, 0.01, package, true);
+      EXPECT_TRUE(p.kernel) << neigh;
+      EXPECT_LT(max_rel_diff(p.kk.f, p.cpu.f), 1e-12) << neigh << ", " << pair.back();
+      EXPECT_LT(max_rel_diff(p.kk.virial, p.cpu.virial), 1e-12) << neigh << ", " << pair.back();
+      EXPECT_NEAR(p.kk.pe, p.cpu.pe, 1e-12 * std::fabs(p.cpu.pe)) << neigh << ", " << pair.back();
+    }
+    const Pair p = run_both(GEN_MIXED, {"fix integrate all etd scheme diagonal", "run 50 post no"},
+                            0.01, 0.002, package, true);
+    EXPECT_TRUE(p.fix_kernel) << neigh;
+    EXPECT_LT(max_rel_diff(p.kk.x, p.cpu.x), 1e-8) << neigh;
+    EXPECT_LT(max_rel_diff(p.kk.v, p.cpu.v), 1e-8) << neigh;
+    EXPECT_LT(max_rel_diff(p.kk.virial, p.cpu.virial), 1e-8) << neigh;
+    EXPECT_GT(max_rel_diff(p.kk.v, p.start_v), 0.1) << neigh;
   }
 }
 
@@ -526,15 +560,6 @@ TEST(KokkosStyles, BadInputStopsWithAnError)
          "neigh_modify every 1 delay 10 check yes", "fix integrate all etd", "run 2 post no"},
         "lets atoms outrun the neighbor skin"}},
       setup, kokkos_args());
-  // what the Kokkos loop does not serve (package kokkos options come before the box)
-  for (const std::string neigh : {"full", "half"}) {
-    std::vector<std::string> args = kokkos_args();
-    args.insert(args.end(), {"-pk", "kokkos", "neigh", neigh, "newton", "off"});
-    etdtest::expect_errors(
-        {{{"pair_style dpd/gen 1.0 1.0 123", "pair_coeff * * 25.0 4.5 2.0", "run 0"},
-          "Pair style dpd/gen/kk requires a half neighbor list and newton on"}},
-        setup, args);
-  }
 }
 
 // LAMMPS finalises Kokkos once, after the last instance and before MPI

@@ -3,6 +3,11 @@
 // The pair loop runs as a Kokkos kernel over LAMMPS's Kokkos half neighbor list, with the same
 // law (pair_law.h) and the same counter-based noise keyed on atom IDs as the CPU style, so its
 // forces equal the CPU style's to round-off (summation order) and its trajectories follow them.
+// The style asks for a half list whatever the package's `neigh` setting: one Gaussian per pair
+// is the loop's main cost, and a full list would draw each twice. Under `neigh full` (a GPU's
+// default) the kernel adds to j atomically, as under `neigh half` with threads or a GPU. With
+// newton off (also a GPU's default) a pair with a ghost is computed on both ranks, each for its
+// own atom, and energy and virial take half of it, as LAMMPS's ev_tally does.
 // Coefficients, pair_coeff, restart and write_data are the CPU style's (the class derives from
 // it, as LAMMPS's dpd/kk derives from dpd).
 //
@@ -80,6 +85,8 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
  private:
   bool host_loop;    // this run is served by the CPU loop (see the header)
   int neighflag;
+  int newton_pair_kk;    // forces on ghosts are summed back to their owners
+  int nlocal_kk;
   double special_lj_kk[4];
   etd::PairNoise
       noise_kk;    // the style's noise, with the ziggurat's tables in DeviceType's memory
@@ -101,8 +108,8 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   KOKKOS_INLINE_FUNCTION void pair_loop(const int ii, EV_FLOAT &ev, Forces &a_f,
                                         Friction &a_friction, Split &a_split) const;
   template <int NEIGHFLAG>
-  KOKKOS_INLINE_FUNCTION void ev_tally(EV_FLOAT &ev, int i, int j, double epair, double fpair,
-                                       double delx, double dely, double delz) const;
+  KOKKOS_INLINE_FUNCTION void ev_tally(EV_FLOAT &ev, int i, int j, bool update_j, double epair,
+                                       double fpair, double delx, double dely, double delz) const;
 
   using KKDeviceType = typename KKDevice<DeviceType>::value;
   template <typename DataType, typename Layout>

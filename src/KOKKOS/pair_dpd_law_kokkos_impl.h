@@ -25,7 +25,8 @@ namespace LAMMPS_NS {
 
 template <class DeviceType, class Style>
 PairDPDLawKokkos<DeviceType, Style>::PairDPDLawKokkos(LAMMPS *lmp) :
-    Base(lmp), host_loop(false), neighflag(0), special_lj_kk{1.0, 1.0, 1.0, 1.0}, timestep_kk(0),
+    Base(lmp), host_loop(false), neighflag(0), newton_pair_kk(1), nlocal_kk(0),
+    special_lj_kk{1.0, 1.0, 1.0, 1.0}, timestep_kk(0),
     inv_sqrt_dt(0.0), need_dup(0)
 {
   this->kokkosable = 1;
@@ -61,12 +62,8 @@ template <class DeviceType, class Style> void PairDPDLawKokkos<DeviceType, Style
   Base::init_style();
   copy_ziggurat_tables();
   host_loop = false;
-  neighflag = this->lmp->kokkos->neighflag;
-  if (neighflag == FULL || this->force->newton_pair == 0)
-    this->error->all(FLERR,
-                     "Pair style {}/kk requires a half neighbor list and newton on "
-                     "(-pk kokkos neigh half newton on)",
-                     Style::name);
+  // a half list in any case (see the header): under neigh full the kernel adds atomically
+  neighflag = this->lmp->kokkos->neighflag == HALF ? HALF : HALFTHREAD;
   this->neigh_request->set_kokkos_host(std::is_same_v<DeviceType, LMPHostType> &&
                                        !std::is_same_v<DeviceType, LMPDeviceType>);
   this->neigh_request->set_kokkos_device(std::is_same_v<DeviceType, LMPDeviceType>);
@@ -171,6 +168,8 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
   k_params.template sync<DeviceType>();
   for (int k = 0; k < 4; k++) special_lj_kk[k] = this->force->special_lj[k];
   timestep_kk = this->update->ntimestep;
+  newton_pair_kk = this->force->newton_pair;
+  nlocal_kk = this->atom->nlocal;
   inv_sqrt_dt = 1.0 / std::sqrt(this->update->dt);
 
   auto *k_list = static_cast<NeighListKokkos<DeviceType> *>(this->list);
@@ -178,7 +177,9 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
   d_neighbors = k_list->d_neighbors;
   d_ilist = k_list->d_ilist;
 
-  need_dup = this->lmp->kokkos->template need_dup<DeviceType>();
+  // as KokkosLMP::need_dup, for the kernel's own flag (the package's may be FULL)
+  need_dup = neighflag == HALFTHREAD &&
+      std::is_same_v<NeedDup_v<HALFTHREAD, DeviceType>, Kokkos::Experimental::ScatterDuplicated>;
   if (need_dup) {
     keep_duplicated(dup_f, f);
     dup_eatom =
@@ -407,34 +408,34 @@ PairDPDLawKokkos<DeviceType, Style>::pair_loop(const int ii, EV_FLOAT &ev, Force
       Law pair(c_ij, g);
       const etd::PairMotion motion{vi, vj, nullptr, nullptr, tagi, tag(j)};
       pair.template evaluate<1>(motion, step);
-      for (int k = 0; k < 3; k++) {
-        fi[k] += pair.force[k];
-        a_f(j, k) -= pair.force[k];
-      }
+      // newton off: a ghost's share is computed by its owner's rank
+      const bool update_j = newton_pair_kk || j < nlocal_kk;
+      for (int k = 0; k < 3; k++) fi[k] += pair.force[k];
+      if (update_j)
+        for (int k = 0; k < 3; k++) a_f(j, k) -= pair.force[k];
       if constexpr (FRICTION != 0) {
         double gt[3], gr[3];
         pair.friction_diagonal(gt, gr);
-        for (int k = 0; k < 3; k++) {
-          gi[k] += gt[k];
-          a_friction(j, k) += gt[k];
-        }
+        for (int k = 0; k < 3; k++) gi[k] += gt[k];
+        if (update_j)
+          for (int k = 0; k < 3; k++) a_friction(j, k) += gt[k];
       }
       if constexpr (SPLIT != 0) {
         double parts[3][3], torque_parts[2][3];
         pair.split(parts, torque_parts);
         for (int p = 0; p < 3; p++)
-          for (int k = 0; k < 3; k++) {
-            si[3 * p + k] += parts[p][k];
-            a_split(j, 3 * p + k) -= parts[p][k];
-          }
+          for (int k = 0; k < 3; k++) si[3 * p + k] += parts[p][k];
+        if (update_j)
+          for (int p = 0; p < 3; p++)
+            for (int k = 0; k < 3; k++) a_split(j, 3 * p + k) -= parts[p][k];
       }
       if (EVFLAG) {
         const bool energy = this->eflag_global || this->eflag_atom;
         const double evdwl = energy ? Law::energy(c_ij, g.rsq, g.r, g.special) : 0.0;
-        if (this->eflag_global) ev.evdwl += evdwl;
+        if (this->eflag_global) ev.evdwl += update_j ? evdwl : 0.5 * evdwl;
         if (this->eflag_atom || this->vflag_either)
-          this->template ev_tally<NEIGHFLAG>(ev, i, j, evdwl, pair.fpair, g.del[0], g.del[1],
-                                             g.del[2]);
+          this->template ev_tally<NEIGHFLAG>(ev, i, j, update_j, evdwl, pair.fpair, g.del[0],
+                                             g.del[1], g.del[2]);
       }
     }
   }
@@ -445,33 +446,36 @@ PairDPDLawKokkos<DeviceType, Style>::pair_loop(const int ii, EV_FLOAT &ev, Force
     for (int m = 0; m < Base::FORCE_SPLIT_VALUES; m++) a_split(i, m) += si[m];
 }
 
-// Per-atom energy (half to each of i and j) and the virial of a central pair force.
+// Per-atom energy (half to each of i and j) and the virial of a central pair force; j's half
+// only where j's share is computed here (update_j), as LAMMPS's ev_tally with newton off.
 template <class DeviceType, class Style>
 template <int NEIGHFLAG>
 KOKKOS_INLINE_FUNCTION void
-PairDPDLawKokkos<DeviceType, Style>::ev_tally(EV_FLOAT &ev, int i, int j, double epair,
-                                              double fpair, double delx, double dely,
-                                              double delz) const
+PairDPDLawKokkos<DeviceType, Style>::ev_tally(EV_FLOAT &ev, int i, int j, bool update_j,
+                                              double epair, double fpair, double delx,
+                                              double dely, double delz) const
 {
   if (this->eflag_atom) {
     auto v_eatom = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_eatom),
                                      decltype(ndup_eatom)>::get(dup_eatom, ndup_eatom);
     auto a_eatom = v_eatom.template access<AtomicDup_v<NEIGHFLAG, DeviceType>>();
     a_eatom[i] += 0.5 * epair;
-    a_eatom[j] += 0.5 * epair;
+    if (update_j) a_eatom[j] += 0.5 * epair;
   }
   if (!this->vflag_either) return;
   const double w[6] = {delx * delx * fpair, dely * dely * fpair, delz * delz * fpair,
                        delx * dely * fpair, delx * delz * fpair, dely * delz * fpair};
-  if (this->vflag_global)
-    for (int k = 0; k < 6; k++) ev.v[k] += w[k];
+  if (this->vflag_global) {
+    const double share = update_j ? 1.0 : 0.5;
+    for (int k = 0; k < 6; k++) ev.v[k] += share * w[k];
+  }
   if (this->vflag_atom) {
     auto v_vatom = ScatterViewHelper<NeedDup_v<NEIGHFLAG, DeviceType>, decltype(dup_vatom),
                                      decltype(ndup_vatom)>::get(dup_vatom, ndup_vatom);
     auto a_vatom = v_vatom.template access<AtomicDup_v<NEIGHFLAG, DeviceType>>();
     for (int k = 0; k < 6; k++) {
       a_vatom(i, k) += 0.5 * w[k];
-      a_vatom(j, k) += 0.5 * w[k];
+      if (update_j) a_vatom(j, k) += 0.5 * w[k];
     }
   }
 }
