@@ -2,19 +2,26 @@
 # The GPU leg of the KOKKOS styles in one command. On a machine with an NVIDIA GPU it
 #   build  builds Kokkos (shared, CUDA + Serial, Kokkos_ARCH_HOPPER90) and a KOKKOS LAMMPS against
 #          it (build_lammps_kokkos.sh with ETD_DPD_KOKKOS_BACKEND=cuda), then the package with
-#          ETD_DPD_KOKKOS=ON (test.sh; the plugin and test_kokkos_styles alone);
+#          ETD_DPD_KOKKOS=ON (the plugin and the KOKKOS tests' programs);
+#   pack   packs that build (the LAMMPS prefix without its build folders, and the plugin and test
+#          programs with their CTest files) into SOURCES/prebuilt.tar.xz, so that a GPU machine
+#          with the same CUDA driver generation runs it instead of building (nvcc takes about an
+#          hour on two cores for this LAMMPS; a device lease is minutes);
 #   test   runs the equivalence tests on the GPU (ctest -L kokkos: test_kokkos_styles on 1 and 2
-#          ranks, -k on g 1);
+#          ranks sharing the GPU, -k on g 1, and the solve's kernels against the CPU solve);
 #   bench  measures atom-steps per second on the Groot-Warren fluid (bench/kokkos/
 #          in.kokkos_throughput: n = 3, a = 25, gamma = 4.5, s = 2, rc = 1, kBT = 1, m = 0.01) at
 #          each size, for the cases (--cases):
 #            gen-nve       dpd/gen/kk + fix nve, dt 0.0007 (stock's largest step at m = 0.01)
 #            dpd-nve       LAMMPS's dpd/kk + fix nve, the same dt
+#            gen-nve-half  dpd/gen/kk + fix nve with -pk kokkos neigh half newton on
+#            dpd-nve-half  dpd/kk + fix nve likewise (each style's fastest setting is compared too)
 #            etd-implicit  fix etd/kk scheme implicit, dt 0.005 \  each at its largest
 #            shardlow      fix shardlow/kk + nve, dt 0.004     /  seed-checked step
 #            etd-diagonal  fix etd/kk scheme diagonal, dt 0.0005  (accuracy matrix, GW m = 0.01)
-#          The implicit scheme and shardlow are compared in simulated time x atoms per second
-#          (atom-steps/s x dt): equal accuracy, bench/accuracy/results/matrix.md.
+#          All but the -half cases run at the package kokkos defaults of the device (neigh full,
+#          newton off on a GPU). The implicit scheme and shardlow are compared in simulated time
+#          x atoms per second (atom-steps/s x dt): equal accuracy, bench/accuracy/results/matrix.md.
 # Results: RESULTS/gpu.jsonl (one line a run), RESULTS/gpu-tests.jsonl (the tests' count) and
 # RESULTS/gpu.md (bench/kokkos/gpu_table.py); with $OUT set (the device tool's folder that comes
 # back) they and logs.tar.gz are copied there after each step. RESULTS: bench/kokkos/results with
@@ -23,24 +30,32 @@
 # Needs: nvcc 12.0 or newer with a host compiler it accepts (CUDA 13 with Kokkos 4.6: the source
 # is patched, tools/kokkos/kokkos-4.6.1-cuda13.patch), CMake 3.16 or newer, MPI (mpicxx, mpirun).
 # A machine without network takes the sources from tools/kokkos/pack_sources.sh, in
-# ./build-gpu-sources (ETD_DPD_GPU_SOURCES), and Boost, Random123 and GoogleTest from there where
-# it has none of its own.
+# ./build-gpu-sources (SOURCES, or ETD_DPD_GPU_SOURCES): Boost, Random123 and GoogleTest where it
+# has none of its own, and Debian's Open MPI (openmpi.tar.xz, unpacked into / without replacing
+# a file) where it has no MPI. With SOURCES/prebuilt.tar.xz (the pack phase, made on a machine
+# with the same nvcc) the build is unpacked instead of made, and the phases run from the folder
+# that packed it (a link to this checkout where the paths differ: CTest files are absolute).
 #
 # Usage: tools/kokkos/gpu.sh [--phases build,test,bench] [--sizes 32000,256000,2048000]
 #          [--steps 500] [--warmup 20] [--timeout 20] [--cases LIST] [--results DIR]
 #   --steps    timed steps per run; a run also stops after --timeout seconds of its loop (LAMMPS's
 #              timer timeout, the warm-up likewise) and the steps done are counted
+#   --phases   any of build, pack, test, bench (pack: after build, on the machine that built)
 # Environment: as build_lammps_kokkos.sh and test.sh. ETD_DPD_KOKKOS_BACKEND=openmp (default
 # cuda) runs the same phases on the OpenMP KOKKOS LAMMPS with ETD_DPD_THREADS threads (default
-# 1): the script's check on a machine without a GPU.
+# 1): the script's check on a machine without a GPU. ETD_DPD_GPU_TEST_TIMEOUT: seconds per test
+# (default 240).
 #
-# On the device tool, after tools/kokkos/pack_sources.sh here (one call, on the H100):
-#   run(command="tools/kokkos/gpu.sh", carry=["build-gpu-sources"], timeout_s=600)
-# A call stopped at its limit during the build: the same call again at once, while the machine is
-# warm (30 s); the build resumes where it stopped. To repeat only the measurements there:
-#   run(command="tools/kokkos/gpu.sh --phases test,bench", carry=["build-gpu-sources"],
-#       timeout_s=600)
+# With the device tool: here, pack_sources.sh, then
+#   ETD_DPD_KOKKOS_BACKEND=cuda tools/kokkos/gpu.sh --phases build,pack
+# and on the GPU one call (the packed files ride in carry; the tree itself is about 14 MiB):
+#   run(command="tools/kokkos/gpu.sh --timeout 8", timeout_s=600,
+#       carry=["build-gpu-sources/kokkos.tar.xz", "build-gpu-sources/lammps.tar.xz",
+#              "build-gpu-sources/deps.tar.xz", "build-gpu-sources/openmpi.tar.xz",
+#              "build-gpu-sources/prebuilt.tar.xz", "build-gpu-sources/prebuilt.root"])
+# Without prebuilt.tar.xz the same call builds there first (16 cores: most of a lease).
 set -euo pipefail
+args=("$@")
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 log() { printf '[etd-dpd %s] %s\n' "$(date +%H:%M:%S)" "$*" >&2; }
 die() { printf '[etd-dpd] ERROR: %s\n' "$*" >&2; exit 1; }
@@ -50,7 +65,7 @@ sizes=32000,256000,2048000
 steps=500
 warmup=20
 timeout=20
-cases=gen-nve,dpd-nve,etd-implicit,shardlow,etd-diagonal
+cases=gen-nve,dpd-nve,gen-nve-half,dpd-nve-half,etd-implicit,shardlow,etd-diagonal
 results=
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -59,20 +74,44 @@ while [ $# -gt 0 ]; do
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
     *) die "unknown argument $1 (--help)" ;;
   esac
+  [ $# -ge 2 ] || die "$1 needs a value (--help)"
   shift 2
 done
+for phase in ${phases//,/ }; do
+  case "$phase" in build|pack|test|bench) ;; *) die "unknown phase $phase (--help)" ;; esac
+done
 for case_name in ${cases//,/ }; do
-  case "$case_name" in gen-nve|dpd-nve|etd-implicit|shardlow|etd-diagonal) ;;
+  case "$case_name" in gen-nve|dpd-nve|gen-nve-half|dpd-nve-half|etd-implicit|shardlow|etd-diagonal) ;;
     *) die "unknown case $case_name (--help)" ;; esac
 done
 export ETD_DPD_KOKKOS_BACKEND=${ETD_DPD_KOKKOS_BACKEND:-cuda}
 backend=$ETD_DPD_KOKKOS_BACKEND
+has() { [[ ",$phases," == *",$1,"* ]]; }
+sources=${ETD_DPD_GPU_SOURCES:-$root/build-gpu-sources}
+build=$root/build-kokkos; [ "$backend" = cuda ] && build=$root/build-kokkos-cuda
+build=${ETD_DPD_KOKKOS_BUILD:-$build}
+
+# ---- a packed build: run from the folder that packed it ---------------------------------------
+prebuilt=
+if [ "$backend" = cuda ] && ! has pack && [ -f "$sources/prebuilt.tar.xz" ] && [ -f "$sources/prebuilt.root" ]; then
+  packed_root=$(cat "$sources/prebuilt.root")
+  if [ "$packed_root" != "$root" ]; then
+    if [ ! -e "$packed_root" ]; then
+      mkdir -p "$(dirname "$packed_root")" && ln -s "$root" "$packed_root"
+      log "this checkout linked at $packed_root, where the packed build was made"
+    elif [ "$(cd "$packed_root" && pwd -P)" != "$(cd "$root" && pwd -P)" ]; then
+      die "the build in $sources/prebuilt.tar.xz was packed at $packed_root, which here is another folder"
+    fi
+    exec bash "$packed_root/tools/kokkos/gpu.sh" "${args[@]}"
+  fi
+  prebuilt=$sources/prebuilt.tar.xz
+fi
+
 if [ -z "$results" ]; then
   if [ "$backend" = cuda ]; then results=$root/bench/kokkos/results; else results=$root/build-gpu-results; fi
 fi
 logs=$root/build-gpu-results/logs
 mkdir -p "$results" "$logs"
-has() { [[ ",$phases," == *",$1,"* ]]; }
 table() { python3 "$root/bench/kokkos/gpu_table.py" "$results/gpu.jsonl" "$results/gpu-tests.jsonl" >"$results/gpu.md"; }
 copy_out() {  # results and logs to the device tool's folder (8 files at most), after each step:
   [ -n "${OUT:-}" ] || return 0  # a command stopped at its time limit keeps what is there
@@ -80,28 +119,51 @@ copy_out() {  # results and logs to the device tool's folder (8 files at most), 
   tar -C "$logs" -czf "$OUT/logs.tar.gz" . 2>/dev/null || true
 }
 trap copy_out EXIT
+untar_xz() {  # ARCHIVE DIR [keep]: tar -J where tar has xz, else Python's tarfile; keep: no file replaced
+  local keep=${3:-}
+  if command -v xz >/dev/null; then
+    tar -C "$2" -xJf "$1" ${keep:+--skip-old-files}
+  else
+    python3 - "$1" "$2" "$keep" <<'PY'
+import os, sys, tarfile
+archive, dest, keep = sys.argv[1:4]
+with tarfile.open(archive, "r:xz") as t:
+    for m in t.getmembers():
+        target = os.path.join(dest, m.name.lstrip("/"))
+        if keep and (os.path.lexists(target) and not m.isdir()):
+            continue
+        t.extract(m, dest, set_attrs=not m.isdir())
+PY
+  fi
+}
 
 # ---- what the machine has ----------------------------------------------------------------
-command -v cmake >/dev/null || die "no cmake"
-if ! command -v mpicxx >/dev/null || ! command -v mpirun >/dev/null; then
-  die "no MPI (mpicxx and mpirun): the package and its tests build against MPI"
-fi
+command -v cmake >/dev/null || [ -n "$prebuilt" ] || die "no cmake"
+install_openmpi() {  # Debian's Open MPI from pack_sources.sh, where the machine has none
+  [ -f "$sources/openmpi.tar.xz" ] || die "no MPI (mpicxx and mpirun), and no $sources/openmpi.tar.xz"
+  log "no MPI here: Debian's Open MPI from $sources/openmpi.tar.xz into / (no file replaced)"
+  untar_xz "$sources/openmpi.tar.xz" / keep
+  ldconfig 2>/dev/null || true
+}
+if ! command -v mpicxx >/dev/null || ! command -v mpirun >/dev/null; then install_openmpi; fi
 if [ "$backend" = cuda ]; then
   command -v nvcc >/dev/null || { [ -x /usr/local/cuda/bin/nvcc ] && export PATH=/usr/local/cuda/bin:$PATH; } \
-    || die "no nvcc: the CUDA toolkit, 12.0 or newer"
-  cuda_version=$(nvcc --version | sed -n 's/.*release \([0-9]*\.[0-9]*\).*/\1/p')
-  [ "${cuda_version%%.*}" -ge 12 ] \
-    || die "nvcc $cuda_version: Kokkos 4.6 for Hopper (sm_90) needs CUDA 12.0 or newer (13.x is patched)"
-  log "nvcc $cuda_version; host compiler $(c++ --version | head -1); $(cmake --version | head -1)"
+    || [ -n "$prebuilt" ] || die "no nvcc: the CUDA toolkit, 12.0 or newer"
+  if command -v nvcc >/dev/null; then
+    cuda_version=$(nvcc --version | sed -n 's/.*release \([0-9]*\.[0-9]*\).*/\1/p')
+    [ "${cuda_version%%.*}" -ge 12 ] \
+      || die "nvcc $cuda_version: Kokkos 4.6 for Hopper (sm_90) needs CUDA 12.0 or newer (13.x is patched)"
+    log "nvcc $cuda_version; host compiler $(c++ --version | head -1); $(cmake --version | head -1)"
+  fi
   if has test || has bench; then
     nvidia-smi -L >&2 || die "no GPU (nvidia-smi -L failed): the test and bench phases need one"
+    nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv >&2 || true
   fi
 fi
 
 # ---- sources: the packed ones where none is named -------------------------------------------
-sources=${ETD_DPD_GPU_SOURCES:-$root/build-gpu-sources}
 unpack() {  # NAME: $sources/NAME.tar.xz into $sources/unpacked, once
-  [ -d "$sources/unpacked/$1" ] || { mkdir -p "$sources/unpacked" && tar -C "$sources/unpacked" -xJf "$sources/$1.tar.xz"; }
+  [ -d "$sources/unpacked/$1" ] || { mkdir -p "$sources/unpacked" && untar_xz "$sources/$1.tar.xz" "$sources/unpacked"; }
 }
 if [ -z "${KOKKOS_SOURCE:-}" ]; then
   [ -f "$sources/kokkos.tar.xz" ] || die "set KOKKOS_SOURCE, or run tools/kokkos/pack_sources.sh first"
@@ -110,46 +172,92 @@ fi
 if [ -z "${LAMMPS_SOURCE:-}" ] && [ -z "${ETD_DPD_LAMMPS:-}" ] && [ -f "$sources/lammps.tar.xz" ]; then
   unpack lammps; export LAMMPS_SOURCE=$sources/unpacked/lammps
 fi
-compiles() { printf '%s\nint main() { return 0; }\n' "$1" | c++ -std=c++17 -x c++ - "${@:2}" -o /dev/null 2>/dev/null; }
-cmake_args=()
-if ! compiles '#include <boost/random/normal_distribution.hpp>' || ! compiles '#include <Random123/philox.h>'; then
-  [ -f "$sources/deps.tar.xz" ] || die "no Boost or Random123 headers, and no $sources/deps.tar.xz"
-  unpack deps; log "Boost and Random123 from $sources/unpacked/deps"
-  cmake_args+=(-D "BOOST_RANDOM_INCLUDE_DIR=$sources/unpacked/deps/include"
-               -D "RANDOM123_INCLUDE_DIR=$sources/unpacked/deps/include")
-fi
-if ! compiles '#include <gtest/gtest.h>' -lgtest -pthread; then
-  [ -f "$sources/deps.tar.xz" ] || die "no GoogleTest, and no $sources/deps.tar.xz"
-  unpack deps
-  gtest=$sources/unpacked/gtest
-  if [ ! -f "$gtest/.complete" ]; then
-    log "building GoogleTest into $gtest"
-    { cmake -S "$sources/unpacked/deps/googletest" -B "$gtest/build" -D CMAKE_BUILD_TYPE=Release \
-        -D BUILD_GMOCK=OFF -D CMAKE_INSTALL_PREFIX="$gtest" -D CMAKE_INSTALL_LIBDIR=lib \
-      && cmake --build "$gtest/build" -j "${ETD_DPD_JOBS:-$(nproc)}" && cmake --install "$gtest/build"; } \
-      >"$logs/gtest.log" 2>&1 || { tail -20 "$logs/gtest.log" >&2; die "GoogleTest build failed"; }
-    touch "$gtest/.complete"
-  fi
-  cmake_args+=(-D "GTEST_ROOT=$gtest" -D "CMAKE_PREFIX_PATH=$gtest")
-fi
-export ETD_DPD_CMAKE_ARGS="${cmake_args[*]}"
-export ETD_DPD_BUILD_TARGETS="etddpd test_kokkos_styles"
 
-# ---- build, test --------------------------------------------------------------------------
-t0=$(date +%s)
-prefix=$(bash "$root/tools/kokkos/build_lammps_kokkos.sh" 2>"$logs/lammps.log" | sed -n 's/^LAMMPS_KOKKOS_PREFIX=//p') \
-  || { tail -40 "$logs/lammps.log" >&2; die "the KOKKOS LAMMPS did not build (logs in $logs)"; }
-[ -f "$prefix/.complete" ] || die "no complete KOKKOS LAMMPS at $prefix"
-log "KOKKOS LAMMPS ($backend): $prefix ($(( $(date +%s) - t0 )) s)"
-if has build; then
-  bash "$root/tools/kokkos/test.sh" -L kokkos -N >"$logs/build.log" 2>&1 \
-    || { tail -40 "$logs/build.log" >&2; die "the package did not build (log: $logs/build.log)"; }
-  log "package built ($(( $(date +%s) - t0 )) s in all)"
-  copy_out
+# ---- the packed build, where it runs here ----------------------------------------------------
+prefix=
+if [ -n "$prebuilt" ]; then
+  t0=$(date +%s)
+  marker=$build/.prebuilt
+  if [ ! -f "$marker" ] || [ ! -f "$(sed -n 's/^prebuilt_prefix=//p' "$marker")/.complete" ]; then
+    untar_xz "$prebuilt" /
+  fi
+  [ -f "$marker" ] || die "$prebuilt holds no $marker"
+  prefix=$(sed -n 's/^prebuilt_prefix=//p' "$marker")
+  [ -f "$prefix/.complete" ] || die "$prebuilt holds no complete LAMMPS at $prefix"
+  # the packed LAMMPS links Debian's libmpi.so.40; a machine whose own MPI is another one gets it
+  if ldd "$prefix/bin/lmp" | grep -q 'not found'; then
+    install_openmpi
+  fi
+  if ! "$prefix/bin/lmp" -h >"$logs/prebuilt-check.log" 2>&1; then
+    ldd "$prefix/bin/lmp" >>"$logs/prebuilt-check.log" 2>&1 || true
+    tail -20 "$logs/prebuilt-check.log" >&2
+    log "the packed LAMMPS does not run here: building instead"
+    rm -rf "$prefix" "$build"; prebuilt=; prefix=
+  else
+    log "packed build unpacked: LAMMPS at $prefix, package at $build ($(( $(date +%s) - t0 )) s)"
+  fi
 fi
+
+if [ -z "$prebuilt" ]; then
+  compiles() { printf '%s\nint main() { return 0; }\n' "$1" | c++ -std=c++17 -x c++ - "${@:2}" -o /dev/null 2>/dev/null; }
+  cmake_args=()
+  if ! compiles '#include <boost/random/normal_distribution.hpp>' || ! compiles '#include <Random123/philox.h>'; then
+    [ -f "$sources/deps.tar.xz" ] || die "no Boost or Random123 headers, and no $sources/deps.tar.xz"
+    unpack deps; log "Boost and Random123 from $sources/unpacked/deps"
+    cmake_args+=(-D "BOOST_RANDOM_INCLUDE_DIR=$sources/unpacked/deps/include"
+                 -D "RANDOM123_INCLUDE_DIR=$sources/unpacked/deps/include")
+  fi
+  if ! compiles '#include <gtest/gtest.h>' -lgtest -pthread; then
+    [ -f "$sources/deps.tar.xz" ] || die "no GoogleTest, and no $sources/deps.tar.xz"
+    unpack deps
+    gtest=$sources/unpacked/gtest
+    if [ ! -f "$gtest/.complete" ]; then
+      log "building GoogleTest into $gtest"
+      { cmake -S "$sources/unpacked/deps/googletest" -B "$gtest/build" -D CMAKE_BUILD_TYPE=Release \
+          -D BUILD_GMOCK=OFF -D CMAKE_INSTALL_PREFIX="$gtest" -D CMAKE_INSTALL_LIBDIR=lib \
+        && cmake --build "$gtest/build" -j "${ETD_DPD_JOBS:-$(nproc)}" && cmake --install "$gtest/build"; } \
+        >"$logs/gtest.log" 2>&1 || { tail -20 "$logs/gtest.log" >&2; die "GoogleTest build failed"; }
+      touch "$gtest/.complete"
+    fi
+    cmake_args+=(-D "GTEST_ROOT=$gtest" -D "CMAKE_PREFIX_PATH=$gtest")
+  fi
+  export ETD_DPD_CMAKE_ARGS="${cmake_args[*]}"
+  export ETD_DPD_BUILD_TARGETS="etddpd test_kokkos_styles test_friction_solve_kokkos"
+
+  # ---- build --------------------------------------------------------------------------------
+  t0=$(date +%s)
+  prefix=$(bash "$root/tools/kokkos/build_lammps_kokkos.sh" 2>"$logs/lammps.log" | sed -n 's/^LAMMPS_KOKKOS_PREFIX=//p') \
+    || { tail -40 "$logs/lammps.log" >&2; die "the KOKKOS LAMMPS did not build (logs in $logs)"; }
+  [ -f "$prefix/.complete" ] || die "no complete KOKKOS LAMMPS at $prefix"
+  log "KOKKOS LAMMPS ($backend): $prefix ($(( $(date +%s) - t0 )) s)"
+  if has build || has test || has pack; then
+    bash "$root/tools/kokkos/test.sh" -L kokkos -N >"$logs/build.log" 2>&1 \
+      || { tail -40 "$logs/build.log" >&2; die "the package did not build (log: $logs/build.log)"; }
+    log "package built in $build ($(( $(date +%s) - t0 )) s in all)"
+    copy_out
+  fi
+fi
+
+# ---- pack ---------------------------------------------------------------------------------
+if has pack; then
+  [ "$backend" = cuda ] || die "the pack phase is for the cuda backend"
+  [ -f "$build/etddpdplugin.so" ] || die "no plugin at $build/etddpdplugin.so: the build phase first"
+  printf 'prebuilt_prefix=%s\nprebuilt_root=%s\nnvcc=%s\n' "$prefix" "$root" "${cuda_version:-}" >"$build/.prebuilt"
+  # the LAMMPS prefix without its build folders, and the package's build without object files;
+  # absolute names, unpacked at /
+  tar -C / -cJf "$sources/prebuilt.tar.xz" \
+    --exclude="${prefix#/}/build" --exclude="${prefix#/}/build-kokkos" --exclude="${prefix#/}/kokkos-source" \
+    --exclude='CMakeFiles' --exclude='*.o' --exclude='*.log' \
+    "${prefix#/}" "${build#/}"
+  printf '%s\n' "$root" >"$sources/prebuilt.root"
+  log "packed: $sources/prebuilt.tar.xz ($(du -m "$sources/prebuilt.tar.xz" | cut -f1) MiB), made at $root"
+fi
+
+# ---- test ---------------------------------------------------------------------------------
 if has test; then
   status=0
-  bash "$root/tools/kokkos/test.sh" -L kokkos >"$logs/test.log" 2>&1 || status=$?
+  (cd "$build" && ctest --output-on-failure -L kokkos --timeout "${ETD_DPD_GPU_TEST_TIMEOUT:-240}") \
+    >"$logs/test.log" 2>&1 || status=$?
   grep -E "tests passed|Passed|Failed|\*\*\*" "$logs/test.log" >&2 || tail -20 "$logs/test.log" >&2
   summary=$(sed -n 's/.*tests passed, \([0-9]*\) tests failed out of \([0-9]*\).*/\1 \2/p' "$logs/test.log")
   read -r failed total <<<"${summary:-0 0}"
@@ -161,8 +269,6 @@ fi
 
 # ---- bench --------------------------------------------------------------------------------
 if has bench; then
-  build=$root/build-kokkos; [ "$backend" = cuda ] && build=$root/build-kokkos-cuda
-  build=${ETD_DPD_KOKKOS_BUILD:-$build}
   plugin=$build/etddpdplugin.so
   [ -f "$plugin" ] || die "no plugin at $plugin: run the build phase first"
   if [ "$backend" = cuda ]; then
@@ -174,13 +280,12 @@ if has bench; then
     device="OpenMP, $threads of $(nproc) cores"  # nproc before OMP_NUM_THREADS, which it follows
     export OMP_PROC_BIND=false OMP_NUM_THREADS=$threads
   fi
-  # the plugin's styles need half lists and newton on, which a GPU does not default to; LAMMPS's
-  # styles run with the package's defaults for the device
-  plugin_package=(-pk kokkos neigh half newton on)
-  # case | pair | integrator | dt
+  # case | pair | integrator | dt | package kokkos keywords (none: the device's defaults)
   table=(
-    "gen-nve|dpd/gen|nve|0.0007" "dpd-nve|dpd|nve|0.0007" "etd-implicit|dpd/gen|implicit|0.005"
-    "shardlow|dpd/fdt/energy|shardlow|0.004" "etd-diagonal|dpd/gen|etd|0.0005"
+    "gen-nve|dpd/gen|nve|0.0007|" "dpd-nve|dpd|nve|0.0007|"
+    "gen-nve-half|dpd/gen|nve|0.0007|neigh half newton on" "dpd-nve-half|dpd|nve|0.0007|neigh half newton on"
+    "etd-implicit|dpd/gen|implicit|0.005|" "shardlow|dpd/fdt/energy|shardlow|0.004|"
+    "etd-diagonal|dpd/gen|etd|0.0005|"
   )
   out=$results/gpu.jsonl
   : >"$out"
@@ -188,8 +293,8 @@ if has bench; then
   for natoms in ${sizes//,/ }; do
     for case_name in ${cases//,/ }; do
       row=$(printf '%s\n' "${table[@]}" | grep "^$case_name|")
-      IFS='|' read -r _ pair integrator dt <<<"$row"
-      package=(); [ "$pair" = dpd ] || [ "$pair" = dpd/fdt/energy ] || package=("${plugin_package[@]}")
+      IFS='|' read -r _ pair integrator dt words <<<"$row"
+      package=(); [ -z "$words" ] || { read -r -a package <<<"-pk kokkos $words"; }
       runlog=$logs/bench-$case_name-$natoms.log
       t1=$(date +%s)
       status=0
@@ -201,6 +306,7 @@ if has bench; then
       style=$(awk '/pair [a-z\/]+, perpetual/{print $3; exit}' "$runlog")
       if [ "$status" != 0 ] || [ -z "$loop" ]; then
         log "$case_name $natoms atoms: FAILED (exit $status; $runlog)"
+        grep -m1 -E "ERROR|error" "$runlog" >&2 || true
         printf '{"kind": "run", "case": "%s", "natoms": %d, "error": "exit %d"}\n' "$case_name" "$natoms" "$status" >>"$out"
         table; copy_out
         continue
