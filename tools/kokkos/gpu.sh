@@ -39,7 +39,8 @@
 # Usage: tools/kokkos/gpu.sh [--phases build,test,bench] [--sizes 32000,256000,2048000]
 #          [--steps 500] [--warmup 20] [--timeout 20] [--cases LIST] [--results DIR]
 #   --steps    timed steps per run; a run also stops after --timeout seconds of its loop (LAMMPS's
-#              timer timeout, the warm-up likewise) and the steps done are counted
+#              timer timeout, checked every step; the warm-up likewise) and the steps done are
+#              counted
 #   --phases   any of build, pack, test, bench (pack: after build, on the machine that built)
 # Environment: as build_lammps_kokkos.sh and test.sh. ETD_DPD_KOKKOS_BACKEND=openmp (default
 # cuda) runs the same phases on the OpenMP KOKKOS LAMMPS with ETD_DPD_THREADS threads (default
@@ -300,7 +301,7 @@ if has bench; then
       status=0
       timeout $((2 * timeout + 300)) "$prefix/bin/lmp" -in "$root/bench/kokkos/in.kokkos_throughput" \
         -var plugin "$plugin" -var pair "$pair" -var integrator "$integrator" -var natoms "$natoms" \
-        -var mass 0.01 -var dt "$dt" -var steps "$steps" -var warmup "$warmup" -var timeout "$timeout" \
+        -var mass 0.01 -var dt "$dt" -var steps "$steps" -var warmup "$warmup" -var timeout "$timeout" -var timer_every 1 \
         "${kokkos[@]}" "${package[@]}" -log "$runlog" -screen none >/dev/null 2>&1 || status=$?
       loop=$(awk '/^BENCH/{b=1} b&&/^Loop time/{print $4, $9; exit}' "$runlog")
       style=$(awk '/pair [a-z\/]+, perpetual/{print $3; exit}' "$runlog")
