@@ -139,6 +139,16 @@ if [ ! -f "$prefix/.complete" ]; then
     fi
     ksrc="$prefix/kokkos-source"
     compiler=(-D CMAKE_CXX_COMPILER="$ksrc/bin/nvcc_wrapper")
+    # libkokkoscore links the driver's libcuda.so.1, which a machine without a GPU driver lacks:
+    # executables then link against the toolkit's stub under that name (link time only)
+    if ! ldconfig -p 2>/dev/null | grep -q 'libcuda\.so\.1 '; then
+      stub=$(find "$(dirname "$(dirname "$(command -v nvcc)")")/" -path '*stubs/libcuda.so' 2>/dev/null | head -1)
+      [ -n "$stub" ] || die "backend cuda: no libcuda.so.1 (GPU driver) and no stubs/libcuda.so in the toolkit"
+      mkdir -p "$prefix/cuda-stubs" && ln -sf "$stub" "$prefix/cuda-stubs/libcuda.so.1"
+      common=(-D CMAKE_INSTALL_PREFIX="$prefix" -D CMAKE_INSTALL_LIBDIR=lib -D CMAKE_INSTALL_RPATH="$prefix/lib"
+              -D CMAKE_EXE_LINKER_FLAGS="-Wl,--disable-new-dtags -Wl,-rpath-link,$prefix/cuda-stubs"
+              -D CMAKE_SHARED_LINKER_FLAGS="-Wl,--disable-new-dtags -Wl,-rpath-link,$prefix/cuda-stubs")
+    fi
   fi
   step "Kokkos configure" "$prefix/kokkos-configure.log" \
     cmake -S "$ksrc" -B "$prefix/build-kokkos" "${kokkos_cmake_options[@]}" "${common[@]}" "${compiler[@]}"

@@ -25,6 +25,10 @@ compiler=()
 if [ "$backend" = cuda ]; then
   build_default=$here/build-kokkos-cuda
   compiler=(-D CMAKE_CXX_COMPILER="$(cat "$prefix/kokkos-source-dir")/bin/nvcc_wrapper")
+  # the toolkit's libcuda stub, where the machine has no GPU driver (build_lammps_kokkos.sh)
+  if [ -d "$prefix/cuda-stubs" ]; then
+    compiler+=(-D CMAKE_EXE_LINKER_FLAGS="-Wl,-rpath-link,$prefix/cuda-stubs")
+  fi
 fi
 build=${ETD_DPD_KOKKOS_BUILD:-$build_default}
 read -r -a extra_cmake <<<"${ETD_DPD_CMAKE_ARGS:-}"
