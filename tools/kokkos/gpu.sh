@@ -34,7 +34,8 @@
 # has none of its own, and Debian's Open MPI (openmpi.tar.xz, unpacked into / without replacing
 # a file) where it has no MPI. With SOURCES/prebuilt.tar.xz (the pack phase, made on a machine
 # with the same nvcc) the build is unpacked instead of made, and the phases run from the folder
-# that packed it (a link to this checkout where the paths differ: CTest files are absolute).
+# that packed it (a link to this checkout where the paths differ: CTest files are absolute); a
+# packed LAMMPS that does not run there stops the command.
 #
 # Usage: tools/kokkos/gpu.sh [--phases build,test,bench] [--sizes 32000,256000,2048000]
 #          [--steps 500] [--warmup 20] [--timeout 20] [--cases LIST] [--results DIR]
@@ -147,6 +148,7 @@ install_openmpi() {  # Debian's Open MPI from pack_sources.sh, where the machine
   ldconfig 2>/dev/null || true
 }
 if ! command -v mpicxx >/dev/null || ! command -v mpirun >/dev/null; then install_openmpi; fi
+log "MPI: $(mpirun --version 2>&1 | head -1)"
 if [ "$backend" = cuda ]; then
   command -v nvcc >/dev/null || { [ -x /usr/local/cuda/bin/nvcc ] && export PATH=/usr/local/cuda/bin:$PATH; } \
     || [ -n "$prebuilt" ] || die "no nvcc: the CUDA toolkit, 12.0 or newer"
@@ -192,8 +194,8 @@ if [ -n "$prebuilt" ]; then
   if ! "$prefix/bin/lmp" -h >"$logs/prebuilt-check.log" 2>&1; then
     ldd "$prefix/bin/lmp" >>"$logs/prebuilt-check.log" 2>&1 || true
     tail -20 "$logs/prebuilt-check.log" >&2
-    log "the packed LAMMPS does not run here: building instead"
-    rm -rf "$prefix" "$build"; prebuilt=; prefix=
+    # building here instead would take most of a device lease: say so, and let the caller choose
+    die "the packed LAMMPS does not run here (above); without $prebuilt this command builds here"
   else
     log "packed build unpacked: LAMMPS at $prefix, package at $build ($(( $(date +%s) - t0 )) s)"
   fi
@@ -302,12 +304,12 @@ if has bench; then
       timeout $((2 * timeout + 300)) "$prefix/bin/lmp" -in "$root/bench/kokkos/in.kokkos_throughput" \
         -var plugin "$plugin" -var pair "$pair" -var integrator "$integrator" -var natoms "$natoms" \
         -var mass 0.01 -var dt "$dt" -var steps "$steps" -var warmup "$warmup" -var timeout "$timeout" -var timer_every 1 \
-        "${kokkos[@]}" "${package[@]}" -log "$runlog" -screen none >/dev/null 2>&1 || status=$?
+        "${kokkos[@]}" "${package[@]}" -log "$runlog" -screen none >"${runlog%.log}.out" 2>&1 || status=$?
       loop=$(awk '/^BENCH/{b=1} b&&/^Loop time/{print $4, $9; exit}' "$runlog")
       style=$(awk '/pair [a-z\/]+, perpetual/{print $3; exit}' "$runlog")
       if [ "$status" != 0 ] || [ -z "$loop" ]; then
         log "$case_name $natoms atoms: FAILED (exit $status; $runlog)"
-        grep -m1 -E "ERROR|error" "$runlog" >&2 || true
+        grep -h -m2 -E "ERROR|error" "$runlog" "${runlog%.log}.out" >&2 || true
         printf '{"kind": "run", "case": "%s", "natoms": %d, "error": "exit %d"}\n' "$case_name" "$natoms" "$status" >>"$out"
         table; copy_out
         continue
