@@ -50,8 +50,11 @@
 #
 # With the device tool: here, pack_sources.sh, then
 #   ETD_DPD_KOKKOS_BACKEND=cuda tools/kokkos/gpu.sh --phases build,pack
-# and on the GPU one call (the packed files ride in carry; the tree itself is about 14 MiB):
-#   run(command="tools/kokkos/gpu.sh --timeout 8", timeout_s=600,
+# (tools/kokkos/rehearse_device.sh rehearses the call here), and on the GPU one call, the
+# benchmark first (each run bounded by --timeout), then the tests (the packed files ride in
+# carry; the tree itself is about 14 MiB):
+#   run(command="tools/kokkos/gpu.sh --phases bench --timeout 5 --warmup 10;
+#                ETD_DPD_GPU_TEST_TIMEOUT=150 tools/kokkos/gpu.sh --phases test", timeout_s=540,
 #       carry=["build-gpu-sources/kokkos.tar.xz", "build-gpu-sources/lammps.tar.xz",
 #              "build-gpu-sources/deps.tar.xz", "build-gpu-sources/openmpi.tar.xz",
 #              "build-gpu-sources/prebuilt.tar.xz", "build-gpu-sources/prebuilt.root"])
@@ -71,12 +74,15 @@ cases=gen-nve,dpd-nve,gen-nve-half,dpd-nve-half,etd-implicit,shardlow,etd-diagon
 results=
 while [ $# -gt 0 ]; do
   case "$1" in
-    --phases) phases=$2 ;; --sizes) sizes=$2 ;; --steps) steps=$2 ;; --warmup) warmup=$2 ;;
-    --timeout) timeout=$2 ;; --cases) cases=$2 ;; --results) results=$2 ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+    --phases|--sizes|--steps|--warmup|--timeout|--cases|--results)
+      [ $# -ge 2 ] || die "$1 needs a value (--help)" ;;
     *) die "unknown argument $1 (--help)" ;;
   esac
-  [ $# -ge 2 ] || die "$1 needs a value (--help)"
+  case "$1" in
+    --phases) phases=$2 ;; --sizes) sizes=$2 ;; --steps) steps=$2 ;; --warmup) warmup=$2 ;;
+    --timeout) timeout=$2 ;; --cases) cases=$2 ;; --results) results=$2 ;;
+  esac
   shift 2
 done
 for phase in ${phases//,/ }; do
