@@ -137,8 +137,11 @@ import os, sys, tarfile
 archive, dest, keep = sys.argv[1:4]
 with tarfile.open(archive, "r:xz") as t:
     for m in t.getmembers():
-        target = os.path.join(dest, m.name.lstrip("/"))
-        if keep and (os.path.lexists(target) and not m.isdir()):
+        # names under dest, as tar does (openmpi.tar.xz holds absolute ones)
+        m.name = m.name.lstrip("/")
+        if m.islnk():
+            m.linkname = m.linkname.lstrip("/")
+        if keep and os.path.lexists(os.path.join(dest, m.name)) and not m.isdir():
             continue
         t.extract(m, dest, set_attrs=not m.isdir())
 PY
