@@ -106,8 +106,7 @@ esac
 confhash=$(printf '%s\n' "${kokkos_cmake_options[@]}" "kokkos-$kver" "${lammps_cmake_options[@]}" "$tag" \
            | sha1sum | cut -c1-10)
 prefix="$cache/$name-$version-$confhash"
-common=(-D CMAKE_INSTALL_PREFIX="$prefix" -D CMAKE_INSTALL_LIBDIR=lib -D CMAKE_INSTALL_RPATH="$prefix/lib"
-        -D CMAKE_EXE_LINKER_FLAGS="-Wl,--disable-new-dtags" -D CMAKE_SHARED_LINKER_FLAGS="-Wl,--disable-new-dtags")
+linker_flags="-Wl,--disable-new-dtags"
 step() {  # NAME LOG COMMAND...
   local name=$1 logf=$2; shift 2
   "$@" >"$logf" 2>&1 || { tail -40 "$logf" >&2; die "$name failed (log: $logf)"; }
@@ -145,11 +144,11 @@ if [ ! -f "$prefix/.complete" ]; then
       stub=$(find "$(dirname "$(dirname "$(command -v nvcc)")")/" -path '*stubs/libcuda.so' 2>/dev/null | head -1)
       [ -n "$stub" ] || die "backend cuda: no libcuda.so.1 (GPU driver) and no stubs/libcuda.so in the toolkit"
       mkdir -p "$prefix/cuda-stubs" && ln -sf "$stub" "$prefix/cuda-stubs/libcuda.so.1"
-      common=(-D CMAKE_INSTALL_PREFIX="$prefix" -D CMAKE_INSTALL_LIBDIR=lib -D CMAKE_INSTALL_RPATH="$prefix/lib"
-              -D CMAKE_EXE_LINKER_FLAGS="-Wl,--disable-new-dtags -Wl,-rpath-link,$prefix/cuda-stubs"
-              -D CMAKE_SHARED_LINKER_FLAGS="-Wl,--disable-new-dtags -Wl,-rpath-link,$prefix/cuda-stubs")
+      linker_flags+=" -Wl,-rpath-link,$prefix/cuda-stubs"
     fi
   fi
+  common=(-D CMAKE_INSTALL_PREFIX="$prefix" -D CMAKE_INSTALL_LIBDIR=lib -D CMAKE_INSTALL_RPATH="$prefix/lib"
+          -D CMAKE_EXE_LINKER_FLAGS="$linker_flags" -D CMAKE_SHARED_LINKER_FLAGS="$linker_flags")
   step "Kokkos configure" "$prefix/kokkos-configure.log" \
     cmake -S "$ksrc" -B "$prefix/build-kokkos" "${kokkos_cmake_options[@]}" "${common[@]}" "${compiler[@]}"
   step "Kokkos build" "$prefix/kokkos-build.log" cmake --build "$prefix/build-kokkos" -j "$jobs"

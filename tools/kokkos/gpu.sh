@@ -173,18 +173,6 @@ if [ "$backend" = cuda ]; then
   fi
 fi
 
-# ---- sources: the packed ones where none is named -------------------------------------------
-unpack() {  # NAME: $sources/NAME.tar.xz into $sources/unpacked, once
-  [ -d "$sources/unpacked/$1" ] || { mkdir -p "$sources/unpacked" && untar_xz "$sources/$1.tar.xz" "$sources/unpacked"; }
-}
-if [ -z "${KOKKOS_SOURCE:-}" ]; then
-  [ -f "$sources/kokkos.tar.xz" ] || die "set KOKKOS_SOURCE, or run tools/kokkos/pack_sources.sh first"
-  unpack kokkos; export KOKKOS_SOURCE=$sources/unpacked/kokkos
-fi
-if [ -z "${LAMMPS_SOURCE:-}" ] && [ -z "${ETD_DPD_LAMMPS:-}" ] && [ -f "$sources/lammps.tar.xz" ]; then
-  unpack lammps; export LAMMPS_SOURCE=$sources/unpacked/lammps
-fi
-
 # ---- the packed build, where it runs here ----------------------------------------------------
 prefix=
 if [ -n "$prebuilt" ]; then
@@ -211,6 +199,17 @@ if [ -n "$prebuilt" ]; then
 fi
 
 if [ -z "$prebuilt" ]; then
+  # ---- sources: the packed ones where none is named -----------------------------------------
+  unpack() {  # NAME: $sources/NAME.tar.xz into $sources/unpacked, once
+    [ -d "$sources/unpacked/$1" ] || { mkdir -p "$sources/unpacked" && untar_xz "$sources/$1.tar.xz" "$sources/unpacked"; }
+  }
+  if [ -z "${KOKKOS_SOURCE:-}" ]; then
+    [ -f "$sources/kokkos.tar.xz" ] || die "set KOKKOS_SOURCE, or run tools/kokkos/pack_sources.sh first"
+    unpack kokkos; export KOKKOS_SOURCE=$sources/unpacked/kokkos
+  fi
+  if [ -z "${LAMMPS_SOURCE:-}" ] && [ -z "${ETD_DPD_LAMMPS:-}" ] && [ -f "$sources/lammps.tar.xz" ]; then
+    unpack lammps; export LAMMPS_SOURCE=$sources/unpacked/lammps
+  fi
   compiles() { printf '%s\nint main() { return 0; }\n' "$1" | c++ -std=c++17 -x c++ - "${@:2}" -o /dev/null 2>/dev/null; }
   cmake_args=()
   if ! compiles '#include <boost/random/normal_distribution.hpp>' || ! compiles '#include <Random123/philox.h>'; then

@@ -3,9 +3,8 @@
 # travels (the tracked and untracked files that git does not ignore, and the packed files of
 # build-gpu-sources) is copied to a scratch checkout, and gpu.sh runs there in a mount namespace
 # that hides the folder above the packing checkout (prebuilt.root) and the LAMMPS cache, as on a
-# fresh device machine. It checks what comes
-# before the GPU: the link to the packing folder, the unpacked build, the packed lmp running, the
-# tests and runs started, the files copied to $OUT. Without a GPU driver, the toolkit's stub
+# fresh device machine. It checks what comes before the GPU: the link to the packing folder, the
+# unpacked build, the packed lmp running, the tests and runs started, the files copied to $OUT. Without a GPU driver, the toolkit's stub
 # stands in for libcuda.so.1, so every test and run then stops at Kokkos's CUDA initialisation
 # ("CUDA driver is a stub library"); that is the expected end.
 # Usage: tools/kokkos/rehearse_device.sh [SCRATCH]     (default /tmp/etd-dpd-device; needs root
@@ -19,9 +18,10 @@ packed=(kokkos.tar.xz lammps.tar.xz deps.tar.xz openmpi.tar.xz prebuilt.tar.xz p
 for f in "${packed[@]}"; do
   [ -f "$root/build-gpu-sources/$f" ] || die "no build-gpu-sources/$f: pack_sources.sh, then gpu.sh --phases build,pack"
 done
-stub=$(find "$(dirname "$(dirname "$(command -v nvcc || echo /usr/local/cuda/bin/nvcc)")")/" \
-       -path '*stubs/libcuda.so' 2>/dev/null | head -1)
-[ -n "$stub" ] || die "no stubs/libcuda.so from a CUDA toolkit"
+# the stub that the build linked against (build_lammps_kokkos.sh, on a machine without a driver)
+packed_prefix=$(sed -n 's/^prebuilt_prefix=//p' "$root/build-kokkos-cuda/.prebuilt" 2>/dev/null || true)
+stub=$(readlink -f "$packed_prefix/cuda-stubs/libcuda.so.1" 2>/dev/null || true)
+[ -f "$stub" ] || die "no $packed_prefix/cuda-stubs/libcuda.so.1: the rehearsal is for the machine without a GPU driver that made the pack"
 rm -rf "$scratch"
 mkdir -p "$scratch/repo/build-gpu-sources" "$scratch/bin" "$scratch/stub" "$scratch/out"
 (cd "$root" && git ls-files -co --exclude-standard -z | tar -cf - --null -T -) | tar -C "$scratch/repo" -xf -
