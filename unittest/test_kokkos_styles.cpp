@@ -4,7 +4,7 @@
 // virial; trajectories under fix nve and both schemes of fix etd; compute dpd/split; kBT and P
 // beside LAMMPS's own dpd/kk; restart; bad input. Built and run only against a KOKKOS LAMMPS
 // (tools/kokkos/test.sh), on 1 and 2 ranks with 1 and 2 threads, or with a CUDA Kokkos on 1 and 2
-// ranks sharing one GPU.
+// ranks sharing one GPU (and 2 host threads where that Kokkos has OpenMP on the host).
 #include "lammps_fixture.h"
 
 #include <gtest/gtest.h>

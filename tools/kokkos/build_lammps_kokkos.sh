@@ -2,8 +2,9 @@
 # Build a KOKKOS LAMMPS to build the package's /kk styles against, idempotently, into a cache
 # prefix keyed by backend, version and configuration. Backends (ETD_DPD_KOKKOS_BACKEND):
 #   openmp (default)  OpenMP + Serial, the packages of the whole test suite
-#   cuda              CUDA + Serial for one GPU architecture, the packages of the KOKKOS tests
-#                     and tools/kokkos/gpu.sh alone (KOKKOS, DPD-BASIC, DPD-REACT, PLUGIN);
+#   cuda              CUDA for one GPU architecture, with OpenMP + Serial on the host (the fix's
+#                     host loops and the pair style's CPU loop take the node's cores with
+#                     -k on g 1 t N), the packages of the KOKKOS tests and tools/kokkos/gpu.sh alone (KOKKOS, DPD-BASIC, DPD-REACT, PLUGIN);
 #                     needs nvcc 12.0 or newer (Kokkos 4.6.1 with nvcc 13: a patched copy of the
 #                     source, kokkos-4.6.1-cuda13.patch) and compiles with Kokkos's nvcc_wrapper
 # Steps:
@@ -92,8 +93,8 @@ case "$backend" in
     # C++17: LAMMPS's KOKKOS package needs no more, and nvcc 12 takes C++20 only with newer GCCs
     kokkos_cmake_options=(
       -D CMAKE_BUILD_TYPE=Release -D BUILD_SHARED_LIBS=on -D CMAKE_CXX_STANDARD=17
-      -D CMAKE_CXX_EXTENSIONS=off -D Kokkos_ENABLE_CUDA=on -D Kokkos_ENABLE_SERIAL=on
-      -D "Kokkos_ARCH_$arch=on" -D Kokkos_ENABLE_IMPL_VIEW_LEGACY=on
+      -D CMAKE_CXX_EXTENSIONS=off -D Kokkos_ENABLE_CUDA=on -D Kokkos_ENABLE_OPENMP=on
+      -D Kokkos_ENABLE_SERIAL=on -D "Kokkos_ARCH_$arch=on" -D Kokkos_ENABLE_IMPL_VIEW_LEGACY=on
     )
     lammps_cmake_options=(
       -D CMAKE_BUILD_TYPE=Release -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=on
@@ -107,15 +108,19 @@ confhash=$(printf '%s\n' "${kokkos_cmake_options[@]}" "kokkos-$kver" "${lammps_c
            | sha1sum | cut -c1-10)
 prefix="$cache/$name-$version-$confhash"
 linker_flags="-Wl,--disable-new-dtags"
+# each step's time is appended to PREFIX/build-times as it ends, so that a build resumed after a
+# stop keeps the times of the steps before (a step stopped midway counts from its resumption)
 step() {  # NAME LOG COMMAND...
-  local name=$1 logf=$2; shift 2
+  local name=$1 logf=$2 started; shift 2
+  started=$(date +%s)
   "$@" >"$logf" 2>&1 || { tail -40 "$logf" >&2; die "$name failed (log: $logf)"; }
+  printf '%s: %s s with %s jobs (%s)\n' "$name" $(( $(date +%s) - started )) "$jobs" "$(date -u +%FT%TZ)" \
+    >>"$prefix/build-times"
 }
 if [ ! -f "$prefix/.complete" ]; then
   log "building Kokkos $kver (shared) and LAMMPS $version ($tag) with KOKKOS into $prefix"
   # a build stopped midway (a time limit) resumes: its build folders are incremental
   mkdir -p "$prefix"
-  t0=$(date +%s)
   compiler=()
   if [ "$backend" = cuda ]; then
     # A copy of the source: nvcc_wrapper's default architecture (Kokkos 4.6's is sm_70, which
@@ -153,14 +158,11 @@ if [ ! -f "$prefix/.complete" ]; then
     cmake -S "$ksrc" -B "$prefix/build-kokkos" "${kokkos_cmake_options[@]}" "${common[@]}" "${compiler[@]}"
   step "Kokkos build" "$prefix/kokkos-build.log" cmake --build "$prefix/build-kokkos" -j "$jobs"
   step "Kokkos install" "$prefix/kokkos-install.log" cmake --install "$prefix/build-kokkos"
-  t1=$(date +%s)
   step "LAMMPS configure" "$prefix/configure.log" \
     cmake -S "$src/cmake" -B "$prefix/build" "${lammps_cmake_options[@]}" "${common[@]}" \
           -D Kokkos_DIR="$prefix/lib/cmake/Kokkos" "${compiler[@]}"
   step "LAMMPS build" "$prefix/build.log" cmake --build "$prefix/build" -j "$jobs"
   step "LAMMPS install" "$prefix/install.log" cmake --install "$prefix/build"
-  t2=$(date +%s)
-  printf 'kokkos %s s\nlammps %s s\njobs %s\n' $((t1 - t0)) $((t2 - t1)) "$jobs" >"$prefix/build-times"
   printf '%s\n' "$src" >"$prefix/source-dir"
   printf '%s\n' "$ksrc" >"$prefix/kokkos-source-dir"
   printf '%s\n' "$backend" >"$prefix/backend"

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The GPU leg of the KOKKOS styles in one command. On a machine with an NVIDIA GPU it
-#   build  builds Kokkos (shared, CUDA + Serial, Kokkos_ARCH_HOPPER90) and a KOKKOS LAMMPS against
-#          it (build_lammps_kokkos.sh with ETD_DPD_KOKKOS_BACKEND=cuda), then the package with
-#          ETD_DPD_KOKKOS=ON (the plugin and the KOKKOS tests' programs);
+#   build  builds Kokkos (shared; CUDA, Kokkos_ARCH_HOPPER90, with OpenMP on the host) and a
+#          KOKKOS LAMMPS against it (build_lammps_kokkos.sh with ETD_DPD_KOKKOS_BACKEND=cuda),
+#          then the package with ETD_DPD_KOKKOS=ON (the plugin and the KOKKOS tests' programs);
 #   pack   packs that build (the LAMMPS prefix without its build folders, and the plugin and test
 #          programs with their CTest files) into SOURCES/prebuilt.tar.xz, so that a GPU machine
 #          with the same CUDA driver generation runs it instead of building (nvcc takes about an
@@ -43,7 +43,8 @@
 #              timer timeout, checked every step; the warm-up likewise) and the steps done are
 #              counted
 #   --phases   any of build, pack, test, bench (pack: after build, on the machine that built)
-# Environment: as build_lammps_kokkos.sh and test.sh. ETD_DPD_KOKKOS_BACKEND=openmp (default
+# Environment: as build_lammps_kokkos.sh and test.sh. ETD_DPD_THREADS: the host's threads of
+# every bench run (-k on g 1 t N; default all cores). ETD_DPD_KOKKOS_BACKEND=openmp (default
 # cuda) runs the same phases on the OpenMP KOKKOS LAMMPS with ETD_DPD_THREADS threads (default
 # 1): the script's check on a machine without a GPU. ETD_DPD_GPU_TEST_TIMEOUT: seconds per test
 # (default 240).
@@ -283,14 +284,17 @@ if has bench; then
   plugin=$build/etddpdplugin.so
   [ -f "$plugin" ] || die "no plugin at $plugin: run the build phase first"
   if [ "$backend" = cuda ]; then
-    kokkos=(-k on g 1 -sf kk)
-    device=$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)
+    # the host's threads run what stays on the host (the fix's search and atom loops, the pair
+    # style's CPU loop under the implicit scheme): all the node's cores, for every case alike
+    threads=${ETD_DPD_THREADS:-$(nproc)}
+    kokkos=(-k on g 1 t "$threads" -sf kk)
+    device="$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1), $threads host threads"
   else
     threads=${ETD_DPD_THREADS:-1}
     kokkos=(-k on t "$threads" -sf kk)
     device="OpenMP, $threads of $(nproc) cores"  # nproc before OMP_NUM_THREADS, which it follows
-    export OMP_PROC_BIND=false OMP_NUM_THREADS=$threads
   fi
+  export OMP_PROC_BIND=false OMP_NUM_THREADS=$threads
   # case | pair | integrator | dt | package kokkos keywords (none: the device's defaults)
   table=(
     "gen-nve|dpd/gen|nve|0.0007|" "dpd-nve|dpd|nve|0.0007|"

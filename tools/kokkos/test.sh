@@ -35,6 +35,13 @@ read -r -a extra_cmake <<<"${ETD_DPD_CMAKE_ARGS:-}"
 targets=()
 for target in ${ETD_DPD_BUILD_TARGETS:-}; do targets+=(--target "$target"); done
 mkdir -p "$build"
+# another compiler than the cached one (a CUDA prefix rebuilt elsewhere): CMake would drop the
+# cache and rerun without this command's -D values, so the cache goes first
+if [ "${#compiler[@]}" -gt 0 ] && [ -f "$build/CMakeCache.txt" ] \
+   && ! grep -qxF "CMAKE_CXX_COMPILER:${compiler[1]#CMAKE_CXX_COMPILER=}" \
+        <(sed 's/^CMAKE_CXX_COMPILER:[A-Z]*=/CMAKE_CXX_COMPILER:/' "$build/CMakeCache.txt"); then
+  rm -rf "$build/CMakeCache.txt" "$build/CMakeFiles"
+fi
 cmake -S "$here" -B "$build" -D CMAKE_BUILD_TYPE=Release -D LAMMPS_SOURCE_DIR="$(cat "$prefix/source-dir")" \
       -D LAMMPS_PREFIX="$prefix" -D ETD_DPD_KOKKOS=ON "${compiler[@]}" "${extra_cmake[@]}" \
       >"$build/configure.log" 2>&1 \
