@@ -56,8 +56,11 @@ def main(runs_path, tests_path=None):
           "an EOS fix, and fix eos/cv has no KOKKOS variant, so it too runs on the host.")
     print()
     for t in tests:
+        not_run = t.get("not_run", 0)
+        stopped = f", {not_run} not run before the deadline (--until)" if not_run else ""
         print(f"Equivalence tests (ctest -L {t['label']}, {t['backend']} backend): "
-              f"{t['total'] - t['failed']} of {t['total']} passed.")
+              f"{t['total'] - t['failed'] - not_run} of {t['total']} passed, {t['failed']} failed"
+              f"{stopped}.")
         print()
     print("| case | atoms | dt | steps | loop s | atom-steps/s | atom time units/s |")
     print("|---|---|---|---|---|---|---|")
@@ -70,7 +73,8 @@ def main(runs_path, tests_path=None):
         print(f"| {CASES.get(r['case'], r['case'])} | {r['natoms']:,} | {r['dt']} | {steps} | "
               f"{r['loop_s']:.3f} | {atom_steps:.3e} | {atom_steps * r['dt']:.3e} |")
     for r in failed:
-        print(f"| {CASES.get(r['case'], r['case'])} | {r['natoms']:,} | | failed ({r['error']}) | | | |")
+        outcome = r["error"] if r["error"].startswith("skipped") else f"failed ({r['error']})"
+        print(f"| {CASES.get(r['case'], r['case'])} | {r['natoms']:,} | | {outcome} | | | |")
     print()
     print("| comparison | " + " | ".join(f"{n:,} atoms" for n in sorted({r["natoms"] for r in runs})) + " |")
     print("|---|" + "---|" * len({r["natoms"] for r in runs}))

@@ -38,11 +38,15 @@
 # packed LAMMPS that does not run there stops the command.
 #
 # Usage: tools/kokkos/gpu.sh [--phases build,test,bench] [--sizes 32000,256000,2048000]
-#          [--steps 500] [--warmup 20] [--timeout 20] [--cases LIST] [--results DIR]
+#          [--steps 500] [--warmup 20] [--timeout 20] [--cases LIST] [--results DIR] [--until T]
 #   --steps    timed steps per run; a run also stops after --timeout seconds of its loop (LAMMPS's
 #              timer timeout, checked every step; the warm-up likewise) and the steps done are
 #              counted
 #   --phases   any of build, pack, test, bench (pack: after build, on the machine that built)
+#   --until    a deadline, in seconds since the epoch (date +%s), by which the bench and test
+#              phases end: a bench run that could not finish by then is skipped (a row says so)
+#              and ctest is stopped there, the tests it did not finish counted as not run; so a
+#              command with a wall-clock limit still brings its results back
 # Environment: as build_lammps_kokkos.sh and test.sh. ETD_DPD_THREADS: the host's threads of
 # every bench run (-k on g 1 t N; default all cores). ETD_DPD_KOKKOS_BACKEND=openmp (default
 # cuda) runs the same phases on the OpenMP KOKKOS LAMMPS with ETD_DPD_THREADS threads (default
@@ -54,8 +58,10 @@
 # (tools/kokkos/rehearse_device.sh rehearses the call here), and on the GPU one call, the
 # benchmark first (each run bounded by --timeout), then the tests (the packed files ride in
 # carry; the tree itself is about 14 MiB):
-#   run(command="tools/kokkos/gpu.sh --phases bench --timeout 5 --warmup 10;
-#                ETD_DPD_GPU_TEST_TIMEOUT=150 tools/kokkos/gpu.sh --phases test", timeout_s=540,
+#   run(command="u=$(( $(date +%s) + 520 ));
+#                tools/kokkos/gpu.sh --phases bench --timeout 5 --warmup 10 --until $((u - 200));
+#                ETD_DPD_GPU_TEST_TIMEOUT=150 tools/kokkos/gpu.sh --phases test --until $u",
+#       timeout_s=540,
 #       carry=["build-gpu-sources/kokkos.tar.xz", "build-gpu-sources/lammps.tar.xz",
 #              "build-gpu-sources/deps.tar.xz", "build-gpu-sources/openmpi.tar.xz",
 #              "build-gpu-sources/prebuilt.tar.xz", "build-gpu-sources/prebuilt.root"])
@@ -73,19 +79,23 @@ warmup=20
 timeout=20
 cases=gen-nve,dpd-nve,gen-nve-half,dpd-nve-half,etd-implicit,shardlow,etd-diagonal
 results=
+until=
 while [ $# -gt 0 ]; do
   case "$1" in
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    --phases|--sizes|--steps|--warmup|--timeout|--cases|--results)
+    --phases|--sizes|--steps|--warmup|--timeout|--cases|--results|--until)
       [ $# -ge 2 ] || die "$1 needs a value (--help)" ;;
     *) die "unknown argument $1 (--help)" ;;
   esac
   case "$1" in
     --phases) phases=$2 ;; --sizes) sizes=$2 ;; --steps) steps=$2 ;; --warmup) warmup=$2 ;;
-    --timeout) timeout=$2 ;; --cases) cases=$2 ;; --results) results=$2 ;;
+    --timeout) timeout=$2 ;; --cases) cases=$2 ;; --results) results=$2 ;; --until) until=$2 ;;
   esac
   shift 2
 done
+[ -z "$until" ] || [[ "$until" =~ ^[0-9]+$ ]] || die "--until $until: seconds since the epoch (date +%s)"
+# seconds left before --until (a large number without one)
+seconds_left() { if [ -n "$until" ]; then echo $((until - $(date +%s))); else echo 1000000000; fi; }
 for phase in ${phases//,/ }; do
   case "$phase" in build|pack|test|bench) ;; *) die "unknown phase $phase (--help)" ;; esac
 done
@@ -268,14 +278,19 @@ fi
 # ---- test ---------------------------------------------------------------------------------
 if has test; then
   status=0
-  (cd "$build" && ctest --output-on-failure -L kokkos --timeout "${ETD_DPD_GPU_TEST_TIMEOUT:-240}") \
+  total=$(cd "$build" && ctest -N -L kokkos | sed -n 's/^Total Tests: *//p')
+  stop=(); left=$(( $(seconds_left) - 10 ))
+  [ -z "$until" ] || stop=(timeout --kill-after=5 "$(( left > 1 ? left : 1 ))")
+  (cd "$build" && "${stop[@]}" ctest --output-on-failure -L kokkos --timeout "${ETD_DPD_GPU_TEST_TIMEOUT:-240}") \
     >"$logs/test.log" 2>&1 || status=$?
   grep -E "tests passed|Passed|Failed|\*\*\*" "$logs/test.log" >&2 || tail -20 "$logs/test.log" >&2
-  summary=$(sed -n 's/.*tests passed, \([0-9]*\) tests failed out of \([0-9]*\).*/\1 \2/p' "$logs/test.log")
-  read -r failed total <<<"${summary:-0 0}"
-  printf '{"kind": "tests", "backend": "%s", "label": "kokkos", "total": %d, "failed": %d, "exit": %d}\n' \
-    "$backend" "$total" "$failed" "$status" >"$results/gpu-tests.jsonl"
-  log "equivalence tests: $((total - failed)) of $total passed"
+  # each test's result line (a ctest stopped at --until prints no summary)
+  passed=$(grep -cE '^ *[0-9]+/[0-9]+ Test +#[0-9]+: .* Passed' "$logs/test.log" || true)
+  ran=$(grep -cE '^ *[0-9]+/[0-9]+ Test +#[0-9]+: ' "$logs/test.log" || true)
+  failed=$((ran - passed)) not_run=$((${total:-0} - ran))
+  printf '{"kind": "tests", "backend": "%s", "label": "kokkos", "total": %d, "failed": %d, "not_run": %d, "exit": %d}\n' \
+    "$backend" "${total:-0}" "$failed" "$not_run" "$status" >"$results/gpu-tests.jsonl"
+  log "equivalence tests: $passed of ${total:-0} passed, $failed failed, $not_run not run"
   copy_out
 fi
 
@@ -311,9 +326,20 @@ if has bench; then
       IFS='|' read -r _ pair integrator dt words <<<"$row"
       package=(); [ -z "$words" ] || { read -r -a package <<<"-pk kokkos $words"; }
       runlog=$logs/bench-$case_name-$natoms.log
+      # a run ends within twice its --timeout (warm-up and timed loop) plus its set-up; one that
+      # could not end by --until is skipped (set-up alone takes tens of seconds at 2M atoms)
+      limit=$((2 * timeout + 300)) left=$(seconds_left)
+      if [ "$left" -lt $((2 * timeout + 60)) ]; then
+        log "$case_name $natoms atoms: skipped, $left s left before --until"
+        printf '{"kind": "run", "case": "%s", "natoms": %d, "error": "skipped: %d s left before --until"}\n' \
+          "$case_name" "$natoms" "$left" >>"$out"
+        table; copy_out
+        continue
+      fi
+      [ "$left" -ge "$limit" ] || limit=$left
       t1=$(date +%s)
       status=0
-      timeout $((2 * timeout + 300)) "$prefix/bin/lmp" -in "$root/bench/kokkos/in.kokkos_throughput" \
+      timeout "$limit" "$prefix/bin/lmp" -in "$root/bench/kokkos/in.kokkos_throughput" \
         -var plugin "$plugin" -var pair "$pair" -var integrator "$integrator" -var natoms "$natoms" \
         -var mass 0.01 -var dt "$dt" -var steps "$steps" -var warmup "$warmup" -var timeout "$timeout" -var timer_every 1 \
         "${kokkos[@]}" "${package[@]}" -log "$runlog" -screen none >"${runlog%.log}.out" 2>&1 || status=$?
