@@ -4,7 +4,8 @@
 #   openmp (default)  OpenMP + Serial, the packages of the whole test suite
 #   cuda              CUDA for one GPU architecture, with OpenMP + Serial on the host (the fix's
 #                     host loops and the pair style's CPU loop take the node's cores with
-#                     -k on g 1 t N), the packages of the KOKKOS tests and tools/kokkos/gpu.sh alone (KOKKOS, DPD-BASIC, DPD-REACT, PLUGIN);
+#                     -k on g 1 t N); the packages of the KOKKOS tests and tools/kokkos/gpu.sh
+#                     alone (KOKKOS, DPD-BASIC, DPD-REACT, PLUGIN);
 #                     needs nvcc 12.0 or newer (Kokkos 4.6.1 with nvcc 13: a patched copy of the
 #                     source, kokkos-4.6.1-cuda13.patch) and compiles with Kokkos's nvcc_wrapper
 # Steps:

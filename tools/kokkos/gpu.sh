@@ -279,8 +279,8 @@ fi
 if has test; then
   status=0
   total=$(cd "$build" && ctest -N -L kokkos | sed -n 's/^Total Tests: *//p')
-  stop=(); left=$(( $(seconds_left) - 10 ))
-  [ -z "$until" ] || stop=(timeout --kill-after=5 "$(( left > 1 ? left : 1 ))")
+  stop=()    # ctest ends 10 s before --until
+  [ -z "$until" ] || { left=$(( $(seconds_left) - 10 )); stop=(timeout --kill-after=5 "$(( left > 1 ? left : 1 ))"); }
   (cd "$build" && "${stop[@]}" ctest --output-on-failure -L kokkos --timeout "${ETD_DPD_GPU_TEST_TIMEOUT:-240}") \
     >"$logs/test.log" 2>&1 || status=$?
   grep -E "tests passed|Passed|Failed|\*\*\*" "$logs/test.log" >&2 || tail -20 "$logs/test.log" >&2

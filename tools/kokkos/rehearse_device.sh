@@ -4,9 +4,10 @@
 # build-gpu-sources) is copied to a scratch checkout, and gpu.sh runs there in a mount namespace
 # that hides the folder above the packing checkout (prebuilt.root) and the LAMMPS cache, as on a
 # fresh device machine. It checks what comes before the GPU: the link to the packing folder, the
-# unpacked build, the packed lmp running, the tests and runs started, the files copied to $OUT. Without a GPU driver, the toolkit's stub
-# stands in for libcuda.so.1, so every test and run then stops at Kokkos's CUDA initialisation
-# ("CUDA driver is a stub library"); that is the expected end.
+# unpacked build, the packed lmp running, the tests and runs started, the files copied to $OUT.
+# Without a GPU driver, the toolkit's stub stands in for libcuda.so.1, so every test and run then
+# stops at Kokkos's CUDA initialisation ("CUDA driver is a stub library"); that is the expected
+# end.
 # Usage: tools/kokkos/rehearse_device.sh [SCRATCH]     (default /tmp/etd-dpd-device; needs root
 #        for unshare, and a pack: gpu.sh --phases build,pack)
 set -euo pipefail

@@ -21,10 +21,11 @@ prefix=$(bash "$here/tools/kokkos/build_lammps_kokkos.sh" | sed -n 's/^LAMMPS_KO
 [ -f "$prefix/.complete" ] || { echo "no complete KOKKOS LAMMPS at $prefix" >&2; exit 1; }
 backend=${ETD_DPD_KOKKOS_BACKEND:-openmp}
 build_default=$here/build-kokkos
-compiler=()
+compiler=() cxx=
 if [ "$backend" = cuda ]; then
   build_default=$here/build-kokkos-cuda
-  compiler=(-D CMAKE_CXX_COMPILER="$(cat "$prefix/kokkos-source-dir")/bin/nvcc_wrapper")
+  cxx=$(cat "$prefix/kokkos-source-dir")/bin/nvcc_wrapper
+  compiler=(-D CMAKE_CXX_COMPILER="$cxx")
   # the toolkit's libcuda stub, where the machine has no GPU driver (build_lammps_kokkos.sh)
   if [ -d "$prefix/cuda-stubs" ]; then
     compiler+=(-D CMAKE_EXE_LINKER_FLAGS="-Wl,-rpath-link,$prefix/cuda-stubs")
@@ -37,9 +38,8 @@ for target in ${ETD_DPD_BUILD_TARGETS:-}; do targets+=(--target "$target"); done
 mkdir -p "$build"
 # another compiler than the cached one (a CUDA prefix rebuilt elsewhere): CMake would drop the
 # cache and rerun without this command's -D values, so the cache goes first
-if [ "${#compiler[@]}" -gt 0 ] && [ -f "$build/CMakeCache.txt" ] \
-   && ! grep -qxF "CMAKE_CXX_COMPILER:${compiler[1]#CMAKE_CXX_COMPILER=}" \
-        <(sed 's/^CMAKE_CXX_COMPILER:[A-Z]*=/CMAKE_CXX_COMPILER:/' "$build/CMakeCache.txt"); then
+if [ -n "$cxx" ] && [ -f "$build/CMakeCache.txt" ] \
+   && [ "$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")" != "$cxx" ]; then
   rm -rf "$build/CMakeCache.txt" "$build/CMakeFiles"
 fi
 cmake -S "$here" -B "$build" -D CMAKE_BUILD_TYPE=Release -D LAMMPS_SOURCE_DIR="$(cat "$prefix/source-dir")" \
