@@ -30,6 +30,8 @@
 #   ETD_DPD_JOBS     parallel build jobs (default: number of cores)
 #   ETD_DPD_KOKKOS_BACKEND  openmp (default) or cuda
 #   ETD_DPD_KOKKOS_ARCH     cuda: Kokkos's GPU architecture (default HOPPER90: H100, H200)
+#   ETD_DPD_KOKKOS_AS_5=1  where this LAMMPS asks for Kokkos 5 and the Kokkos source is 4.6.x:
+#                    build that Kokkos as its stand-in (kokkos-4.6.1-as-5.patch on a copy)
 #   ETD_DPD_DEBIAN_MIRROR  (default http://deb.debian.org/debian)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -65,6 +67,17 @@ else
   tag="debian-$suite"
 fi
 version=$(sed -n 's/#define LAMMPS_VERSION "\(.*\)"/\1/p' "$src/src/version.h" | tr -d ' ')
+
+# LAMMPS 4Jul2026 asks for Kokkos 5; a Kokkos 4.6 stands in for it only when asked to
+wanted_major=$(sed -n 's/.*find_package(Kokkos \([0-9]*\)\..*/\1/p' "$src/cmake/Modules/Packages/KOKKOS.cmake" | head -1)
+as5=no
+if [ "${wanted_major:-4}" -ge 5 ] && [ "${kver%%.*}" -lt 5 ]; then
+  [ "${kver%.*}" = 4.6 ] && [ "${ETD_DPD_KOKKOS_AS_5:-0}" = 1 ] \
+    || die "LAMMPS $version asks for Kokkos $wanted_major (cmake/Modules/Packages/KOKKOS.cmake) and the
+  Kokkos source is $kver: set KOKKOS_SOURCE to a Kokkos $wanted_major.x, or, with Kokkos 4.6.x,
+  ETD_DPD_KOKKOS_AS_5=1 to build it as a stand-in (tools/kokkos/kokkos-4.6.1-as-5.patch)"
+  as5=yes
+fi
 
 backend=${ETD_DPD_KOKKOS_BACKEND:-openmp}
 case "$backend" in
@@ -105,8 +118,9 @@ case "$backend" in
     name=lammps-kokkos-cuda ;;
   *) die "ETD_DPD_KOKKOS_BACKEND=$backend: openmp or cuda" ;;
 esac
+stand_in=(); [ "$as5" = no ] || stand_in=(kokkos-4.6.1-as-5)
 confhash=$(printf '%s\n' "${kokkos_cmake_options[@]}" "kokkos-$kver" "${lammps_cmake_options[@]}" "$tag" \
-           | sha1sum | cut -c1-10)
+           "${stand_in[@]}" | sha1sum | cut -c1-10)
 prefix="$cache/$name-$version-$confhash"
 linker_flags="-Wl,--disable-new-dtags"
 # each step's time is appended to PREFIX/build-times as it ends, so that a build resumed after a
@@ -123,26 +137,36 @@ if [ ! -f "$prefix/.complete" ]; then
   # a build stopped midway (a time limit) resumes: its build folders are incremental
   mkdir -p "$prefix"
   compiler=()
+  # A copy of the Kokkos source where it needs changes: with CUDA, nvcc_wrapper's default
+  # architecture (Kokkos 4.6's is sm_70, which nvcc 13 no longer knows) must be this GPU's
+  # before CMake's first compiler check, and Kokkos 4.6 needs a patch for CUDA 13's runtime API;
+  # as Kokkos 5's stand-in, the patch of ETD_DPD_KOKKOS_AS_5
+  patches=()
+  [ "$as5" = no ] || patches+=("$here/tools/kokkos/kokkos-4.6.1-as-5.patch")
   if [ "$backend" = cuda ]; then
-    # A copy of the source: nvcc_wrapper's default architecture (Kokkos 4.6's is sm_70, which
-    # nvcc 13 no longer knows) must be this GPU's before CMake's first compiler check, and
-    # Kokkos 4.6 needs a patch for CUDA 13's runtime API
     log "backend cuda: nvcc $cuda_version, Kokkos_ARCH_$arch ($sm)"
+    if [ "$cuda_major" -ge 13 ] && [ "${kver%.*}" = 4.6 ]; then
+      patches+=("$here/tools/kokkos/kokkos-4.6.1-cuda13.patch")
+    fi
+  fi
+  if [ "$backend" = cuda ] || [ ${#patches[@]} -gt 0 ]; then
     if [ ! -f "$prefix/kokkos-source/.prepared" ]; then
       rm -rf "$prefix/kokkos-source"
       cp -a "$ksrc" "$prefix/kokkos-source"
-      sed -i "s/^default_arch=.*/default_arch=\"$sm\"/" "$prefix/kokkos-source/bin/nvcc_wrapper"
-      if [ "$cuda_major" -ge 13 ] && [ "${kver%.*}" = 4.6 ]; then
-        cuda13_patch=$here/tools/kokkos/kokkos-4.6.1-cuda13.patch
+      [ "$backend" != cuda ] \
+        || sed -i "s/^default_arch=.*/default_arch=\"$sm\"/" "$prefix/kokkos-source/bin/nvcc_wrapper"
+      for patch_file in "${patches[@]}"; do
         if command -v patch >/dev/null; then
-          patch -d "$prefix/kokkos-source" -p1 <"$cuda13_patch" >/dev/null
+          patch -d "$prefix/kokkos-source" -p1 <"$patch_file" >/dev/null
         else  # git apply outside a repository patches plain files too
-          (cd "$prefix/kokkos-source" && git apply -p1 "$cuda13_patch")
-        fi || die "kokkos-4.6.1-cuda13.patch does not apply to Kokkos $kver"
-      fi
+          (cd "$prefix/kokkos-source" && git apply -p1 "$patch_file")
+        fi || die "$(basename "$patch_file") does not apply to Kokkos $kver"
+      done
       touch "$prefix/kokkos-source/.prepared"
     fi
     ksrc="$prefix/kokkos-source"
+  fi
+  if [ "$backend" = cuda ]; then
     compiler=(-D CMAKE_CXX_COMPILER="$ksrc/bin/nvcc_wrapper")
     # libkokkoscore links the driver's libcuda.so.1, which a machine without a GPU driver lacks:
     # executables then link against the toolkit's stub under that name (link time only)
