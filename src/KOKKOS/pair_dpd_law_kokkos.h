@@ -26,6 +26,7 @@
 
 #include "pair_dpd_style.h"
 
+#include "kokkos_pair_views.h"
 #include "kokkos_type.h"
 #include "pair_kokkos.h"
 
@@ -40,6 +41,7 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   using Coefficients = typename Law::Coefficients;
   using device_type = DeviceType;
   using AT = ArrayTypes<DeviceType>;
+  using Views = KokkosPairViews<DeviceType>;
   using value_type = EV_FLOAT;
   static_assert(Law::central && !Law::rotation,
                 "the Kokkos pair loop is written for central laws without rotation");
@@ -76,8 +78,8 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
                                          const int &ii, EV_FLOAT &ev) const;
 
   // the views LAMMPS's f dot r virial reads
-  typename AT::t_x_array_randomread x;
-  typename AT::t_f_array f;
+  typename Views::x_randomread x;
+  typename Views::f_array f;
 
  protected:
   void allocate() override;
@@ -119,22 +121,22 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   using NonDupScatterView =
       KKScatterView<DataType, Layout, KKDeviceType, KKScatterSum, KKScatterNonDuplicated>;
 
-  DupScatterView<F_FLOAT *[3], typename DAT::t_f_array::array_layout> dup_f;
-  DupScatterView<E_FLOAT *, typename DAT::t_efloat_1d::array_layout> dup_eatom;
-  DupScatterView<F_FLOAT *[6], typename DAT::t_virial_array::array_layout> dup_vatom;
-  NonDupScatterView<F_FLOAT *[3], typename DAT::t_f_array::array_layout> ndup_f;
-  NonDupScatterView<E_FLOAT *, typename DAT::t_efloat_1d::array_layout> ndup_eatom;
-  NonDupScatterView<F_FLOAT *[6], typename DAT::t_virial_array::array_layout> ndup_vatom;
+  DupScatterView<double *[3], typename Views::f_layout> dup_f;
+  DupScatterView<double *, typename Views::eatom_layout> dup_eatom;
+  DupScatterView<double *[6], typename Views::vatom_layout> dup_vatom;
+  NonDupScatterView<double *[3], typename Views::f_layout> ndup_f;
+  NonDupScatterView<double *, typename Views::eatom_layout> ndup_eatom;
+  NonDupScatterView<double *[6], typename Views::vatom_layout> ndup_vatom;
 
-  typename AT::t_x_array_randomread v;
+  typename Views::v_randomread v;
   typename AT::t_int_1d_randomread type;
   typename AT::t_tagint_1d_randomread tag;
   typename AT::t_neighbors_2d d_neighbors;
   typename AT::t_int_1d_randomread d_ilist;
   typename AT::t_int_1d_randomread d_numneigh;
 
-  typename AT::tdual_ffloat_2d k_cutsq;
-  typename AT::t_ffloat_2d d_cutsq;
+  typename Views::cutsq_dual k_cutsq;
+  typename Views::cutsq d_cutsq;
   Kokkos::DualView<Coefficients **, Kokkos::LayoutRight, DeviceType> k_params;
   typename Kokkos::DualView<Coefficients **, Kokkos::LayoutRight, DeviceType>::t_dev_const_um
       params;
@@ -146,10 +148,10 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   DupScatterView<double **, Kokkos::LayoutRight> dup_friction, dup_split;
   NonDupScatterView<double **, Kokkos::LayoutRight> ndup_friction, ndup_split;
 
-  DAT::tdual_efloat_1d k_eatom;
-  DAT::tdual_virial_array k_vatom;
-  typename AT::t_efloat_1d d_eatom;
-  typename AT::t_virial_array d_vatom;
+  typename Views::eatom_dual k_eatom;
+  typename Views::vatom_dual k_vatom;
+  typename Views::eatom d_eatom;
+  typename Views::vatom d_vatom;
 
   friend void pair_virial_fdotr_compute<PairDPDLawKokkos>(PairDPDLawKokkos *);
 };

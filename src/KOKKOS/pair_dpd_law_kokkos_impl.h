@@ -114,11 +114,12 @@ template <class DeviceType, class Style>
 double PairDPDLawKokkos<DeviceType, Style>::init_one(int i, int j)
 {
   const double range = Base::init_one(i, j);
-  k_params.h_view(i, j) = this->table[i * this->stride + j];
-  k_params.h_view(j, i) = this->table[j * this->stride + i];
-  k_params.template modify<LMPHostType>();
-  k_cutsq.h_view(i, j) = k_cutsq.h_view(j, i) = range * range;
-  k_cutsq.template modify<LMPHostType>();
+  k_params.view_host()(i, j) = this->table[i * this->stride + j];
+  k_params.view_host()(j, i) = this->table[j * this->stride + i];
+  k_params.modify_host();
+  // (LAMMPS's host copy, which the CPU loop also reads as cutsq)
+  k_cutsq.view_host()(i, j) = k_cutsq.view_host()(j, i) = range * range;
+  k_cutsq.modify_host();
   return range;
 }
 
@@ -213,12 +214,12 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
   if (this->eflag_atom) {
     if (need_dup) Kokkos::Experimental::contribute(d_eatom, dup_eatom);
     k_eatom.template modify<DeviceType>();
-    k_eatom.template sync<LMPHostType>();
+    k_eatom.sync_host();
   }
   if (this->vflag_atom) {
     if (need_dup) Kokkos::Experimental::contribute(d_vatom, dup_vatom);
     k_vatom.template modify<DeviceType>();
-    k_vatom.template sync<LMPHostType>();
+    k_vatom.sync_host();
   }
   this->copymode = 0;
   this->atomKK->modified(this->execution_space,
