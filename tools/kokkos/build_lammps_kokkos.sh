@@ -45,8 +45,10 @@ die() { printf '[etd-dpd] ERROR: %s\n' "$*" >&2; exit 1; }
 # ---- Kokkos source: Debian's kokkos orig tarball, verified ------------------------------
 ksrcdir="$cache/src-$ksuite-kokkos"
 if [ -n "${KOKKOS_SOURCE:-}" ]; then
-  ksrc=$(cd "$KOKKOS_SOURCE" && pwd)
-  kver=$(sed -n 's/^set(Kokkos_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\))/\2/p' "$ksrc/CMakeLists.txt" | paste -sd.)
+  ksrc=$(cd "$KOKKOS_SOURCE" 2>/dev/null && pwd) || die "KOKKOS_SOURCE=$KOKKOS_SOURCE is no folder"
+  kver=
+  [ ! -f "$ksrc/CMakeLists.txt" ] \
+    || kver=$(sed -n 's/^set(Kokkos_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\))/\2/p' "$ksrc/CMakeLists.txt" | paste -sd.)
   [ -n "$kver" ] || die "$ksrc is no Kokkos source tree (no Kokkos_VERSION in CMakeLists.txt)"
 elif [ ! -f "$ksrcdir/kokkos/CMakeLists.txt" ]; then
   ETD_DPD_DEBIAN_MIRROR=$mirror bash "$here/tools/debian_lammps_source.sh" "$ksuite" "$ksrcdir" \
@@ -60,12 +62,16 @@ if [ -z "${KOKKOS_SOURCE:-}" ]; then ksrc="$ksrcdir/kokkos"; kver=$(cat "$ksrc/.
 # ---- LAMMPS source -----------------------------------------------------------------------
 suite=${ETD_DPD_LAMMPS:-sid}
 if [ -n "${LAMMPS_SOURCE:-}" ]; then
-  src=$(cd "$LAMMPS_SOURCE" && pwd); tag="custom-$(printf '%s' "$src" | sha1sum | cut -c1-8)"
+  src=$(cd "$LAMMPS_SOURCE" 2>/dev/null && pwd) || die "LAMMPS_SOURCE=$LAMMPS_SOURCE is no folder"
+  tag="custom-$(printf '%s' "$src" | sha1sum | cut -c1-8)"
 else
   src="$cache/src-$suite/lammps"
   [ -f "$src/src/version.h" ] || bash "$here/tools/debian_lammps_source.sh" "$suite" "$cache/src-$suite" >/dev/null
   tag="debian-$suite"
 fi
+for file in src/version.h cmake/Modules/Packages/KOKKOS.cmake; do
+  [ -f "$src/$file" ] || die "$src is no LAMMPS source tree with a KOKKOS package (no $file)"
+done
 version=$(sed -n 's/#define LAMMPS_VERSION "\(.*\)"/\1/p' "$src/src/version.h" | tr -d ' ')
 
 # LAMMPS 4Jul2026 asks for Kokkos 5; a Kokkos 4.6 stands in for it only when asked to

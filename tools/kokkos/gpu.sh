@@ -94,6 +94,11 @@ while [ $# -gt 0 ]; do
   shift 2
 done
 [ -z "$until" ] || [[ "$until" =~ ^[0-9]+$ ]] || die "--until $until: seconds since the epoch (date +%s)"
+for size in ${sizes//,/ }; do [[ "$size" =~ ^[1-9][0-9]*$ ]] || die "--sizes: $size is no number of atoms"; done
+[ -n "${sizes//,/}" ] || die "--sizes: no size given"
+[[ "$steps" =~ ^[1-9][0-9]*$ ]] || die "--steps $steps: a positive number of steps"
+[[ "$warmup" =~ ^[0-9]+$ ]] || die "--warmup $warmup: a number of steps"
+[[ "$timeout" =~ ^[1-9][0-9]*$ ]] || die "--timeout $timeout: seconds, positive"
 # seconds left before --until (a large number without one)
 seconds_left() { if [ -n "$until" ]; then echo $((until - $(date +%s))); else echo 1000000000; fi; }
 for phase in ${phases//,/ }; do

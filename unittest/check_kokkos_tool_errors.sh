@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# The KOKKOS tools stop with an ERROR that names the bad argument or setting, before they build
+# or run anything: tools/kokkos/gpu.sh's arguments, and build_lammps_kokkos.sh's backend and
+# its LAMMPS/Kokkos pairing (a LAMMPS that asks for Kokkos 5 against a Kokkos 4.6 source,
+# without ETD_DPD_KOKKOS_AS_5). The LAMMPS and Kokkos trees here are stubs with the files the
+# script reads first; no network, no compiler.
+set -uo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+# expect_error WHAT PATTERN COMMAND...: the command exits non-zero with an ERROR line matching PATTERN
+expect_error() {
+  local what=$1 pattern=$2 out status; shift 2
+  out=$("$@" 2>&1); status=$?
+  if [ "$status" -ne 0 ] && grep -q "ERROR: .*$pattern" <<<"$out"; then
+    echo "ok: $what"
+  else
+    echo "FAIL: $what (status $status): $out"; failures=$((failures + 1))
+  fi
+}
+gpu=$root/tools/kokkos/gpu.sh
+expect_error "gpu.sh unknown argument" "unknown argument --bogus" bash "$gpu" --bogus
+expect_error "gpu.sh option without value" "--steps needs a value" bash "$gpu" --steps
+expect_error "gpu.sh --until not a time" "--until abc" bash "$gpu" --until abc
+expect_error "gpu.sh unknown phase" "unknown phase deploy" bash "$gpu" --phases build,deploy
+expect_error "gpu.sh unknown case" "unknown case gen-nvt" bash "$gpu" --cases gen-nve,gen-nvt
+expect_error "gpu.sh size not a number" "--sizes: 32k" bash "$gpu" --sizes 32000,32k
+expect_error "gpu.sh zero steps" "--steps 0" bash "$gpu" --steps 0
+expect_error "gpu.sh warmup not a number" "--warmup -5" bash "$gpu" --warmup -5
+expect_error "gpu.sh timeout not a number" "--timeout 1m" bash "$gpu" --timeout 1m
+
+# stub trees: a LAMMPS that asks find_package(Kokkos 5.1.0), a Kokkos 4.6.1
+mkdir -p "$work/lammps/src" "$work/lammps/cmake/Modules/Packages" "$work/kokkos"
+echo '#define LAMMPS_VERSION "4 Jul 2026"' >"$work/lammps/src/version.h"
+echo '  find_package(Kokkos 5.1.0 REQUIRED CONFIG)' >"$work/lammps/cmake/Modules/Packages/KOKKOS.cmake"
+printf 'set(Kokkos_VERSION_MAJOR 4)\nset(Kokkos_VERSION_MINOR 6)\nset(Kokkos_VERSION_PATCH 1)\n' \
+  >"$work/kokkos/CMakeLists.txt"
+build=$root/tools/kokkos/build_lammps_kokkos.sh
+expect_error "build_lammps_kokkos.sh Kokkos 4.6 for a LAMMPS that asks for 5" \
+  "LAMMPS 4Jul2026 asks for Kokkos 5" \
+  env ETD_DPD_CACHE="$work/cache" LAMMPS_SOURCE="$work/lammps" KOKKOS_SOURCE="$work/kokkos" bash "$build"
+expect_error "build_lammps_kokkos.sh unknown backend" "ETD_DPD_KOKKOS_BACKEND=hip" \
+  env ETD_DPD_CACHE="$work/cache" LAMMPS_SOURCE="$work/lammps" KOKKOS_SOURCE="$work/kokkos" \
+  ETD_DPD_KOKKOS_AS_5=1 ETD_DPD_KOKKOS_BACKEND=hip bash "$build"
+expect_error "build_lammps_kokkos.sh KOKKOS_SOURCE no Kokkos tree" "no Kokkos source tree" \
+  env ETD_DPD_CACHE="$work/cache" LAMMPS_SOURCE="$work/lammps" KOKKOS_SOURCE="$work/lammps" bash "$build"
+expect_error "build_lammps_kokkos.sh KOKKOS_SOURCE no folder" "KOKKOS_SOURCE=$work/none is no folder" \
+  env ETD_DPD_CACHE="$work/cache" LAMMPS_SOURCE="$work/lammps" KOKKOS_SOURCE="$work/none" bash "$build"
+expect_error "build_lammps_kokkos.sh LAMMPS_SOURCE no LAMMPS tree" "no LAMMPS source tree .*no src/version.h" \
+  env ETD_DPD_CACHE="$work/cache" LAMMPS_SOURCE="$work/kokkos" KOKKOS_SOURCE="$work/kokkos" bash "$build"
+[ ! -e "$work/cache" ] || { echo "FAIL: a stopped build left $work/cache behind"; failures=$((failures + 1)); }
+[ "$failures" -eq 0 ] && echo PASS
+exit "$failures"
