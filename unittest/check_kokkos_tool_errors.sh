@@ -5,6 +5,9 @@
 # without ETD_DPD_KOKKOS_AS_5). The LAMMPS and Kokkos trees here are stubs with the files the
 # script reads first; no network, no compiler.
 set -uo pipefail
+# the settings a caller may have exported (tools/kokkos/test.sh's own) would change the paths
+unset ETD_DPD_KOKKOS_AS_5 ETD_DPD_KOKKOS_BACKEND ETD_DPD_KOKKOS_ARCH ETD_DPD_LAMMPS LAMMPS_SOURCE \
+  KOKKOS_SOURCE ETD_DPD_KOKKOS_SUITE ETD_DPD_GPU_SOURCES ETD_DPD_THREADS
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
