@@ -7,6 +7,8 @@
 # builds against (tools/kokkos/README.md), so KOKKOS_SOURCE must name an unpacked Kokkos release.
 # Run it in every session that touches src/KOKKOS or the pair loop.
 #   KOKKOS_SOURCE=/path/to/kokkos-4.6.1 ETD_DPD_LAMMPS=trixie tools/kokkos/test.sh [ctest args]
+#   ETD_DPD_KOKKOS_AS_5=1 KOKKOS_SOURCE=/path/to/kokkos-4.6.1 ETD_DPD_KOKKOS_BUILD=$PWD/build-kokkos-sid \
+#     tools/kokkos/test.sh          (LAMMPS 4Jul2026, Kokkos 4.6.1 standing in for 5)
 # Environment: as build_lammps_kokkos.sh (ETD_DPD_KOKKOS_BACKEND=cuda: the package compiled with
 # that Kokkos's nvcc_wrapper, and the KOKKOS tests on 1 and 2 ranks sharing one GPU), and
 #   ETD_DPD_KOKKOS_BUILD   build folder (default ./build-kokkos, ./build-kokkos-cuda for cuda)
