@@ -1,9 +1,10 @@
-// The implicit scheme's solve in Kokkos kernels (src/KOKKOS/friction_solve_kokkos.h) against the
-// CPU solve (friction_solve.h) on one DPD cluster: from the block-Jacobi start and from a given
-// start, with atoms held, and with remote partners (slots) filled by an exchange; the pairs
-// handed over in device memory, and the step's right-hand side, against the host's; and the
-// pairs' assembly in kernels (friction_pairs_kokkos.h) against the host assembly's rules. Run
-// with the KOKKOS tests (label kokkos), on 1 and 2 threads.
+// The implicit scheme's operator and solve in Kokkos kernels
+// (src/KOKKOS/friction_operator_kokkos.h, friction_solve_kokkos.h) against the CPU solve
+// (friction_solve.h) on one DPD cluster: from the block-Jacobi start and from a given start, with
+// atoms held, and with remote partners (slots) filled by an exchange; the pairs handed over in
+// device memory, and the step's right-hand side, against the host's; and the pairs' assembly in
+// kernels (friction_pairs_kokkos.h) against the host assembly's rules. Run with the KOKKOS tests
+// (label kokkos), on 1 and 2 threads.
 #include "dpd_kernel.h"
 #include "dpd_random.h"
 #include "friction_operator.h"

@@ -1,5 +1,5 @@
 // ETD-DPD: the incidence list of the implicit scheme's pairs, for G applied atom by atom on a
-// device (friction_solve_kokkos.h): per owned atom, the pairs it takes part in, in pair order,
+// device (friction_operator_kokkos.h): per owned atom, the pairs it takes part in, in pair order,
 // with the atom at each pair's other end and which end it is, so that no two threads write one
 // atom and every atom's sum has the order of the pairs. Pure Kokkos.
 #ifndef ETD_FRICTION_INCIDENCE_KOKKOS_H

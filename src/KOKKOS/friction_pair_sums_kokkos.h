@@ -4,7 +4,7 @@
 // shares into a copy of its own (i's summed over its run first, then j's where j is owned), and
 // the next per-atom pass sums the copies and clears them (Shares::take). Every sum has a fixed
 // order for a given thread count. For the Kokkos backends that run on the host (OpenMP, Serial;
-// friction_solve_kokkos.h applies G through an incidence list on a device). Pure Kokkos.
+// friction_operator_kokkos.h applies G through an incidence list on a device). Pure Kokkos.
 #ifndef ETD_FRICTION_PAIR_SUMS_KOKKOS_H
 #define ETD_FRICTION_PAIR_SUMS_KOKKOS_H
 

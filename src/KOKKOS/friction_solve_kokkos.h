@@ -1,237 +1,32 @@
 // ETD-DPD: the implicit scheme's friction solve, (mass_weight M + friction_weight G) x = b, in
-// Kokkos kernels: the block-Jacobi preconditioner, G applied, and the same single-reduction
-// conjugate gradients as conjugate_gradient.h, for translation (3 unknowns an atom); with the
-// step's right-hand sides. Pure Kokkos (no LAMMPS), so a unit test compares it with the CPU solve
-// directly.
-//
-// Where the kernels run on the host (OpenMP, Serial), G is applied pair by pair, each pair once
-// as the CPU solver applies it, each thread into a copy of its own (friction_pair_sums_kokkos.h).
-// On a device, G is applied per owned atom over the pairs it takes part in (an incidence list
-// built with the pairs, friction_incidence_kokkos.h), so no two threads write one atom. Every
-// sum has a fixed order for a given thread count. Vectors over the partners (owned atoms, then
-// one slot per remote atom, implicit_partners.h) have their slots filled through the caller's
-// exchange, on the host, once per application of G (none on one rank).
+// Kokkos kernels: the block-Jacobi preconditioner and the same single-reduction conjugate
+// gradients as conjugate_gradient.h, for translation (3 unknowns an atom), over the operator of
+// friction_operator_kokkos.h (the step's pairs, their right-hand sides, A applied). Pure Kokkos
+// (no LAMMPS), so a unit test compares it with the CPU solve directly. Every sum has a fixed
+// order for a given thread count.
 #ifndef ETD_FRICTION_SOLVE_KOKKOS_H
 #define ETD_FRICTION_SOLVE_KOKKOS_H
 
-#include "friction_incidence_kokkos.h"
-#include "friction_operator.h"
-#include "friction_pair_sums_kokkos.h"
+#include "friction_operator_kokkos.h"
 #include "friction_solve.h"
-#include "kokkos_views.h"
 
 #include <Kokkos_Core.hpp>
 
-#include <functional>
-#include <vector>
-
 namespace etd {
 
-template <class DeviceType> class FrictionSolveKokkos {
+template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorKokkos<DeviceType> {
  public:
-  using execution_space = typename DeviceType::execution_space;
-  using Values = kk::Values<DeviceType>;
-  using Indices = kk::Indices<DeviceType>;
-  using Geometry = kk::Geometry<DeviceType>;
-  // fills the slots [3 nowned, 3 npartners) of a host array of partner values from their owners
-  using Exchange = std::function<void(double *)>;
-  // sums count values (at most 9) over the ranks, in place
-  using GlobalSum = std::function<void(double *, int)>;
-  using PairSums = PairSumsKokkos<DeviceType>;
-  using Shares = typename PairSums::Shares;
-  using Incidence = FrictionIncidenceKokkos<DeviceType>;
-
-  // whether the kernels run where the host's memory is (then G is applied pair by pair)
-  static constexpr bool on_host =
-      Kokkos::SpaceAccessibility<Kokkos::DefaultHostExecutionSpace,
-                                 typename DeviceType::memory_space>::accessible;
-
-  // The step's pairs (i owned, j a partner index; as FrictionPairAssembly holds them, the pairs
-  // of one atom i together) over nowned owned atoms and npartners partners; their runs, or the
-  // incidence list, are found here, on the host.
-  void set_pairs(const std::vector<FrictionPair> &pairs, int nowned, int npartners)
-  {
-    nowned_ = nowned;
-    npartners_ = npartners;
-    const int npairs = static_cast<int>(pairs.size());
-    kk::grow(geometry_, npairs);
-    auto h_geometry = Kokkos::create_mirror_view(geometry_);
-    pair_i_.resize(npairs);
-    pair_j_.resize(npairs);
-    for (int p = 0; p < npairs; p++) {
-      const FrictionPair &pair = pairs[p];
-      for (int k = 0; k < 3; k++) h_geometry(p, k) = pair.e[k];
-      h_geometry(p, 3) = pair.friction;
-      pair_i_[p] = pair.i;
-      pair_j_[p] = pair.j;
-    }
-    Kokkos::deep_copy(geometry_, h_geometry);
-    by_pairs_ = on_host;
-    if constexpr (on_host) {
-      kk::upload(partner_, pair_j_.data(), npairs);
-      sums_.find_runs(partner_, pair_i_.data(), npairs);
-    } else {
-      incidence_.build_on_host(pair_i_.data(), pair_j_.data(), npairs, nowned);
-    }
-  }
-
-  // The step's pairs already in DeviceType's memory (friction_pairs_kokkos.h), the views kept,
-  // not copied. Where the kernels run on the host, G is applied by the pairs' runs: rows
-  // (optional) gives them, row r the pairs [row_start(r), row_start(r + 1)) of atom rows(r)
-  // (else they are found from pair_i). On a device the incidence list is built in kernels, each
-  // atom's entries in pair order.
-  void set_pairs(const Indices &pair_i, const Indices &pair_j, const Geometry &geometry,
-                 int npairs, int nowned, int npartners, const Indices *rows = nullptr,
-                 const Indices *row_start = nullptr, int nrows = 0)
-  {
-    if constexpr (on_host) {
-      nowned_ = nowned;
-      npartners_ = npartners;
-      geometry_ = geometry;
-      by_pairs_ = true;
-      if (rows)
-        sums_.set_runs(pair_j, *rows, *row_start, nrows);
-      else
-        sums_.find_runs(pair_j, pair_i.data(), npairs);
-    } else {
-      set_pairs_in_kernels(pair_i, pair_j, geometry, npairs, nowned, npartners);
-    }
-  }
-
-  // the same, the incidence list built in kernels (a GPU's path; public for its test)
-  void set_pairs_in_kernels(const Indices &pair_i, const Indices &pair_j,
-                            const Geometry &geometry, int npairs, int nowned, int npartners)
-  {
-    nowned_ = nowned;
-    npartners_ = npartners;
-    geometry_ = geometry;
-    by_pairs_ = false;
-    incidence_.build_in_kernels(pair_i, pair_j, npairs, nowned);
-  }
-
-  // The friction step's right-hand side over the owned atoms, b = M v - (h/2) G u +
-  // sqrt(h) sum_pairs (+-) noise e (+ on the pair's i, - on its j), with u given on all partners
-  // and the pairs' noise sigma w_R theta; with gu (optional) also G u. Under moving images
-  // (image_offsets: 3 per pair, the velocity of the pair's ghost image on top of its owner's)
-  // b also holds -h G_offset, the friction of the images' velocities. Host arrays: inertia, v,
-  // b, gu 3 nowned values, u 3 npartners.
-  void step_rhs(const double *inertia, const double *v, const double *u, const Values &noise,
-                double h, double *b, double *gu, const Values *image_offsets = nullptr)
-  {
-    const int n = 3 * nowned_;
-    kk::upload(inertia_, inertia, n);
-    kk::upload(b_, v, n);    // b_ holds v until it is overwritten with b
-    kk::upload(x_, u, 3 * npartners_);
-    const bool moving = image_offsets != nullptr;
-    pair_terms(noise, std::sqrt(h), image_offsets);
-    auto inertia_view = inertia_;
-    auto rhs = b_;
-    auto friction = w_;
-    auto kick = kick_;
-    auto image = image_;
-    const double half_h = 0.5 * h;
-    Kokkos::parallel_for(
-        "etd:step_rhs", Kokkos::RangePolicy<execution_space>(0, n), KOKKOS_LAMBDA(const int d) {
-          rhs(d) = inertia_view(d) * rhs(d) - half_h * friction(d) + kick(d);
-          if (moving) rhs(d) -= h * image(d);
-        });
-    kk::download(b_, b, n);
-    if (gu) kk::download(w_, gu, n);
-  }
-
-  // The overdamped step's terms over the owned atoms, into host arrays of 3 nowned values: gu =
-  // G u (u given on all partners), kick = root sum_pairs (+-) noise e and, under moving images
-  // (image_offsets), image = G_offset, the friction of the images' velocities (else untouched)
-  void friction_terms(const double *u, const Values &noise, double root, double *gu,
-                      double *kick, double *image, const Values *image_offsets = nullptr)
-  {
-    const int n = 3 * nowned_;
-    kk::upload(x_, u, 3 * npartners_);
-    pair_terms(noise, root, image_offsets);
-    kk::download(w_, gu, n);
-    kk::download(kick_, kick, n);
-    if (image_offsets) kk::download(image_, image, n);
-  }
-
-  // Per owned atom from u in x_ (on all partners): w_ = G u, kick_ = root sum_pairs (+-) noise e
-  // (+ on the pair's i, - on its j; noise: sigma w_R theta per pair) and, under moving images
-  // (image_offsets: 3 per pair, the velocity of the pair's ghost image on top of its owner's),
-  // image_ = G_offset, gamma w_D (e . (0 - offset)) e summed in pair order (as
-  // FrictionPairAssembly::build() sums it)
-  void pair_terms(const Values &noise, double root, const Values *image_offsets)
-  {
-    const int n = 3 * nowned_;
-    kk::grow(w_, n);
-    kk::grow(kick_, n);
-    const bool moving = image_offsets != nullptr;
-    if (moving) kk::grow(image_, n);
-    auto offsets = incidence_.offsets();
-    auto incidence = incidence_.incidence();
-    auto other = incidence_.other();
-    auto end = incidence_.end();
-    auto geometry = geometry_;
-    auto inertia_view = inertia_;
-    auto given = x_;
-    auto friction = w_;
-    auto kick = kick_;
-    auto image = image_;
-    const Values offset = moving ? *image_offsets : Values();
-    if (by_pairs_) {
-      // per pair: G u, the impulse and (moving images) the images' friction, + on i, - on j
-      const int width = moving ? 9 : 6;
-      if (moving)
-        sums_.add(typename PairSums::StepShares{given, noise, offset, geometry, root, moving},
-                  nowned_);
-      else
-        sums_.template add_friction<6>(geometry_, given, 1.0, nowned_, noise, root);
-      const Shares shares = sums_.shares(width, nowned_);
-      Kokkos::parallel_for(
-          "etd:pair_terms", Kokkos::RangePolicy<execution_space>(0, nowned_),
-          KOKKOS_LAMBDA(const int a) {
-            for (int k = 0; k < 3; k++) {
-              const int d = 3 * a + k;
-              friction(d) = shares.take(width * a + k);
-              kick(d) = shares.take(width * a + 3 + k);
-              if (moving) image(d) = shares.take(9 * a + 6 + k);
-            }
-          });
-      return;
-    }
-    Kokkos::parallel_for(
-        "etd:pair_terms", Kokkos::RangePolicy<execution_space>(0, nowned_),
-        KOKKOS_LAMBDA(const int a) {
-          double g[3];
-          Incidence::apply_atom(a, given, inertia_view, offsets, incidence, other, geometry, 0.0, 1.0, g);
-          double impulse[3] = {0.0, 0.0, 0.0};
-          for (int e = offsets(a); e < offsets(a + 1); e++) {
-            const int p = incidence(e);
-            const double amount = root * noise(p);
-            for (int k = 0; k < 3; k++)
-              impulse[k] += end(e) > 0 ? amount * geometry(p, k) : -(amount * geometry(p, k));
-          }
-          double image_friction[3] = {0.0, 0.0, 0.0};
-          if (moving)
-            for (int e = offsets(a); e < offsets(a + 1); e++) {
-              const int p = incidence(e);
-              const double o[3] = {offset(3 * p), offset(3 * p + 1), offset(3 * p + 2)};
-              if (o[0] == 0.0 && o[1] == 0.0 && o[2] == 0.0) continue;
-              const double projected = geometry(p, 3) *
-                  (geometry(p, 0) * (0.0 - o[0]) + geometry(p, 1) * (0.0 - o[1]) +
-                   geometry(p, 2) * (0.0 - o[2]));
-              for (int k = 0; k < 3; k++)
-                if (end(e) > 0)
-                  image_friction[k] += projected * geometry(p, k);
-                else
-                  image_friction[k] -= projected * geometry(p, k);
-            }
-          for (int k = 0; k < 3; k++) {
-            const int d = 3 * a + k;
-            friction(d) = g[k];
-            kick(d) = impulse[k];
-            if (moving) image(d) = image_friction[k];
-          }
-        });
-  }
+  using Operator = FrictionOperatorKokkos<DeviceType>;
+  using typename Operator::execution_space;
+  using typename Operator::Values;
+  using typename Operator::Indices;
+  using typename Operator::Geometry;
+  using typename Operator::Exchange;
+  using typename Operator::GlobalSum;
+  using typename Operator::PairSums;
+  using typename Operator::Shares;
+  using typename Operator::Incidence;
+  using Operator::apply;
 
   // Solves over the 3 nowned unknowns; atoms with mobile[a] = 0, or with neither mass nor
   // friction, are held at zero. inertia, b, x: 3 nowned values; start (optional): the start
@@ -462,36 +257,6 @@ template <class DeviceType> class FrictionSolveKokkos {
         });
   }
 
-  // out = A u over the owned atoms (u over the partners: its slots filled here)
-  void apply(Values &u, const Values &out)
-  {
-    fill_slots(u);
-    auto given = u;
-    auto offsets = incidence_.offsets();
-    auto incidence = incidence_.incidence();
-    auto other = incidence_.other();
-    auto geometry = geometry_;
-    auto inertia = inertia_;
-    const double mass_weight = mass_weight_, friction_weight = friction_weight_;
-    if (by_pairs_) {
-      sums_.add_friction(geometry_, u, friction_weight, nowned_);
-      const Shares shares = sums_.shares(3, nowned_);
-      Kokkos::parallel_for(
-          "etd:apply", Kokkos::RangePolicy<execution_space>(0, 3 * nowned_),
-          KOKKOS_LAMBDA(const int d) {
-            out(d) = mass_weight * inertia(d) * given(d) + shares.take(d);
-          });
-      return;
-    }
-    Kokkos::parallel_for(
-        "etd:apply", Kokkos::RangePolicy<execution_space>(0, nowned_), KOKKOS_LAMBDA(const int a) {
-          double au[3];
-          Incidence::apply_atom(a, given, inertia, offsets, incidence, other, geometry, mass_weight,
-                     friction_weight, au);
-          for (int k = 0; k < 3; k++) out(3 * a + k) = au[k];
-        });
-  }
-
   // out_k = (M_a^-1 v)_k of atom a's inverted block, 0 where the unknown is held
   KOKKOS_INLINE_FUNCTION static void block_product(int a, const Values &inverse,
                                                    const Values &held, const double v[3],
@@ -632,37 +397,28 @@ template <class DeviceType> class FrictionSolveKokkos {
                             functor, result);
     global_sum(sums, with_b ? cg_detail::NSUMS : cg_detail::BB);
   }
-
  private:
-  int nowned_ = 0, npartners_ = 0;
-  // G applied by pairs (the host's threads: sums_) or by atoms (a device: incidence_)
-  bool by_pairs_ = false;
-  PairSums sums_;
-  Incidence incidence_;
-  Indices partner_;    // each pair's j, where the host set_pairs() gives the pairs
-  double mass_weight_ = 1.0, friction_weight_ = 0.0;
-  const Exchange *exchange_ = nullptr;
+  using Operator::nowned_;
+  using Operator::npartners_;
+  using Operator::by_pairs_;
+  using Operator::sums_;
+  using Operator::incidence_;
+  using Operator::geometry_;
+  using Operator::mass_weight_;
+  using Operator::friction_weight_;
+  using Operator::exchange_;
+  using Operator::inertia_;
+  using Operator::b_;
+  using Operator::x_;
+  using Operator::w_;
+  using Operator::fill_slots;
+
   const GlobalSum *global_sum_ = nullptr;
   bool deflate_ = false;
   double active_[3] = {0.0, 0.0, 0.0};    // per component, the unknowns solved over all ranks
-  Geometry geometry_;     // e0, e1, e2, gamma w_D per pair
-  std::vector<int> pair_i_, pair_j_;
   Indices mobile_;
-  Values inertia_, b_, inverse_, held_;    // held_: 1 on unknowns held at their start
-  Values r_, z_, p_, w_, s_, x_;           // z_ and x_ over the partners: G acts on them
-  Values kick_, image_;                    // pair_terms(): the impulse, the images' friction
-
-
-  // a partner vector's slots from their owners (through the host); every rank calls it, with
-  // slots or without, since the exchange is collective
-  void fill_slots(Values &vector) const
-  {
-    auto host = Kokkos::create_mirror_view(vector);
-    Kokkos::deep_copy(host, vector);
-    (*exchange_)(host.data());
-    Kokkos::deep_copy(vector, host);
-  }
-
+  Values inverse_, held_;    // held_: 1 on unknowns held at their start
+  Values r_, z_, p_, s_;     // z_ over the partners: G acts on it
 };
 
 }    // namespace etd
