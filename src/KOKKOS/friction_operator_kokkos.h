@@ -35,8 +35,6 @@ template <class DeviceType> class FrictionOperatorKokkos {
   using Geometry = kk::Geometry<DeviceType>;
   // fills the slots [3 nowned, 3 npartners) of a host array of partner values from their owners
   using Exchange = std::function<void(double *)>;
-  // sums count values (at most 9) over the ranks, in place
-  using GlobalSum = std::function<void(double *, int)>;
   using PairSums = PairSumsKokkos<DeviceType>;
   using Shares = typename PairSums::Shares;
   using Incidence = FrictionIncidenceKokkos<DeviceType>;
@@ -262,6 +260,7 @@ template <class DeviceType> class FrictionOperatorKokkos {
           for (int k = 0; k < 3; k++) out(3 * a + k) = au[k];
         });
   }
+
  protected:
   int nowned_ = 0, npartners_ = 0;
   // G applied by pairs (the host's threads: sums_) or by atoms (a device: incidence_)
@@ -274,8 +273,8 @@ template <class DeviceType> class FrictionOperatorKokkos {
   // A's weights, and the exchange that fills a partner vector's slots (the solve's)
   double mass_weight_ = 1.0, friction_weight_ = 0.0;
   const Exchange *exchange_ = nullptr;
-  // shared with the solve: inertia_ and b_ over the owned atoms; x_ (over the partners) holds u
-  // and w_ G u for the right-hand sides, the solution and A p in the solve
+  // shared with the solve, over the owned atoms (x_ over the partners): for the right-hand
+  // sides b_ holds v, then b; x_ holds u and w_ G u; in the solve x_ is the solution and w_ A z
   Values inertia_, b_, x_, w_;
   Values kick_, image_;    // pair_terms(): the impulse, the images' friction
 

@@ -12,6 +12,8 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <functional>
+
 namespace etd {
 
 template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorKokkos<DeviceType> {
@@ -22,7 +24,8 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
   using typename Operator::Indices;
   using typename Operator::Geometry;
   using typename Operator::Exchange;
-  using typename Operator::GlobalSum;
+  // sums count values (at most 9) over the ranks, in place
+  using GlobalSum = std::function<void(double *, int)>;
   using typename Operator::PairSums;
   using typename Operator::Shares;
   using typename Operator::Incidence;
@@ -397,6 +400,7 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
                             functor, result);
     global_sum(sums, with_b ? cg_detail::NSUMS : cg_detail::BB);
   }
+
  private:
   using Operator::nowned_;
   using Operator::npartners_;

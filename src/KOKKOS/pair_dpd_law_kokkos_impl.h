@@ -214,6 +214,8 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
   if (this->eflag_atom) {
     if (need_dup) Kokkos::Experimental::contribute(d_eatom, dup_eatom);
     k_eatom.template modify<DeviceType>();
+    // sync_host() reaches LAMMPS's own host array (eatom, and vatom below); in LAMMPS 4Jul2026
+    // sync<LMPHostType>() syncs only the TransformView's Kokkos views, not that array
     k_eatom.sync_host();
   }
   if (this->vflag_atom) {
