@@ -40,6 +40,7 @@ echo '  find_package(Kokkos 5.1.0 REQUIRED CONFIG)' >"$work/lammps/cmake/Modules
 printf 'set(Kokkos_VERSION_MAJOR 4)\nset(Kokkos_VERSION_MINOR 6)\nset(Kokkos_VERSION_PATCH 1)\n' \
   >"$work/kokkos/CMakeLists.txt"
 build=$root/tools/kokkos/build_lammps_kokkos.sh
+expect_error "build_lammps_kokkos.sh unknown argument" "unknown argument --bogus" bash "$build" --bogus
 expect_error "build_lammps_kokkos.sh Kokkos 4.6 for a LAMMPS that asks for 5" \
   "LAMMPS 4Jul2026 asks for Kokkos 5" \
   env ETD_DPD_CACHE="$work/cache" LAMMPS_SOURCE="$work/lammps" KOKKOS_SOURCE="$work/kokkos" bash "$build"

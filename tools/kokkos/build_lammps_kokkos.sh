@@ -21,6 +21,8 @@
 #      tools/bootstrap.sh (the packages the whole test suite needs) plus PKG_KOKKOS, Kokkos_ENABLE_OPENMP/SERIAL, BUILD_OMP=on and
 #      EXTERNAL_KOKKOS=on against the Kokkos of step 1, installed into the same PREFIX.
 # Usage: tools/kokkos/build_lammps_kokkos.sh        (prints LAMMPS_KOKKOS_PREFIX=... last)
+#        tools/kokkos/build_lammps_kokkos.sh --print-prefix   (the prefix alone: fetches the
+#                                        sources where needed, builds nothing)
 # Environment:
 #   ETD_DPD_LAMMPS   Debian suite of the LAMMPS source (default sid)
 #   LAMMPS_SOURCE    use this LAMMPS source tree instead
@@ -34,6 +36,14 @@
 #                    build that Kokkos as its stand-in (kokkos-4.6.1-as-5.patch on a copy)
 #   ETD_DPD_DEBIAN_MIRROR  (default http://deb.debian.org/debian)
 set -euo pipefail
+print_prefix=no
+for arg in "$@"; do
+  case "$arg" in
+    --print-prefix) print_prefix=yes ;;
+    *) printf '[etd-dpd] ERROR: build_lammps_kokkos.sh: unknown argument %s (--print-prefix)\n' "$arg" >&2
+       exit 2 ;;
+  esac
+done
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 cache=${ETD_DPD_CACHE:-$HOME/.cache/etd-dpd}
 jobs=${ETD_DPD_JOBS:-$(nproc)}
@@ -124,10 +134,28 @@ case "$backend" in
     name=lammps-kokkos-cuda ;;
   *) die "ETD_DPD_KOKKOS_BACKEND=$backend: openmp or cuda" ;;
 esac
-stand_in=(); [ "$as5" = no ] || stand_in=(kokkos-4.6.1-as-5)
+# The patches for a copy of the Kokkos source: Kokkos 4.6 with nvcc 13 needs one for CUDA 13's
+# runtime API; the stand-in for Kokkos 5 is another (ETD_DPD_KOKKOS_AS_5)
+patches=()
+[ "$as5" = no ] || patches+=("$here/tools/kokkos/kokkos-4.6.1-as-5.patch")
+if [ "$backend" = cuda ] && [ "$cuda_major" -ge 13 ] && [ "${kver%.*}" = 4.6 ]; then
+  patches+=("$here/tools/kokkos/kokkos-4.6.1-cuda13.patch")
+fi
+# the prefix is keyed by what the build is made of, the patches' contents included, so that a
+# changed patch builds anew instead of reusing a build made with the old one
+patch_digests=()
+for patch_file in "${patches[@]}"; do
+  patch_digests+=("$(sha256sum <"$patch_file" | cut -d' ' -f1)")
+done
 confhash=$(printf '%s\n' "${kokkos_cmake_options[@]}" "kokkos-$kver" "${lammps_cmake_options[@]}" "$tag" \
-           "${stand_in[@]}" | sha1sum | cut -c1-10)
+           "${patch_digests[@]}" | sha1sum | cut -c1-10)
 prefix="$cache/$name-$version-$confhash"
+if [ "$print_prefix" = yes ]; then
+  echo "LAMMPS_KOKKOS_PREFIX=$prefix"
+  exit 0
+fi
+# a prefix may be a link to a build made elsewhere; its files name the real folder
+[ ! -L "$prefix" ] || prefix=$(readlink -f "$prefix")
 linker_flags="-Wl,--disable-new-dtags"
 # each step's time is appended to PREFIX/build-times as it ends, so that a build resumed after a
 # stop keeps the times of the steps before (a step stopped midway counts from its resumption)
@@ -143,18 +171,10 @@ if [ ! -f "$prefix/.complete" ]; then
   # a build stopped midway (a time limit) resumes: its build folders are incremental
   mkdir -p "$prefix"
   compiler=()
-  # A copy of the Kokkos source where it needs changes: with CUDA, nvcc_wrapper's default
-  # architecture (Kokkos 4.6's is sm_70, which nvcc 13 no longer knows) must be this GPU's
-  # before CMake's first compiler check, and Kokkos 4.6 needs a patch for CUDA 13's runtime API;
-  # as Kokkos 5's stand-in, the patch of ETD_DPD_KOKKOS_AS_5
-  patches=()
-  [ "$as5" = no ] || patches+=("$here/tools/kokkos/kokkos-4.6.1-as-5.patch")
-  if [ "$backend" = cuda ]; then
-    log "backend cuda: nvcc $cuda_version, Kokkos_ARCH_$arch ($sm)"
-    if [ "$cuda_major" -ge 13 ] && [ "${kver%.*}" = 4.6 ]; then
-      patches+=("$here/tools/kokkos/kokkos-4.6.1-cuda13.patch")
-    fi
-  fi
+  # A copy of the Kokkos source where it needs changes: the patches above, and with CUDA
+  # nvcc_wrapper's default architecture (Kokkos 4.6's is sm_70, which nvcc 13 no longer knows),
+  # which must be this GPU's before CMake's first compiler check
+  [ "$backend" != cuda ] || log "backend cuda: nvcc $cuda_version, Kokkos_ARCH_$arch ($sm)"
   if [ "$backend" = cuda ] || [ ${#patches[@]} -gt 0 ]; then
     if [ ! -f "$prefix/kokkos-source/.prepared" ]; then
       rm -rf "$prefix/kokkos-source"
