@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Threads against ranks: dpd/gen/kk (Kokkos OpenMP) beside dpd/gen on MPI ranks and beside
 # LAMMPS's dpd/kk and dpd, with fix nve, fix etd and fix etd scheme implicit on 24,000 atoms of
-# the standard fluid, all with the
-# KOKKOS LAMMPS of tools/kokkos (one binary). The set-ups run alternated, ROUNDS times over, in
+# the standard fluid; and the implicit scheme beside LAMMPS's fix shardlow and fix shardlow/kk at
+# equal accuracy; all with the KOKKOS LAMMPS of tools/kokkos (one binary). The set-ups run alternated, ROUNDS times over, in
 # one sitting; each run's loop time goes to results/throughput.jsonl (replaced), and
 # table.py turns it into results/throughput.md.
 #   KOKKOS_SOURCE=... ETD_DPD_LAMMPS=trixie bash bench/kokkos/run.sh [ROUNDS [STEPS]]
@@ -20,7 +20,8 @@ lmp="$prefix/bin/lmp"
 mpi=(mpirun --oversubscribe); [ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root)
 export OMP_PROC_BIND=false
 # name | ranks | threads (0: no Kokkos) | pair style | integrator (nve; etd: fix etd diagonal;
-# implicit: fix etd scheme implicit at the accuracy matrix's step for GW m = 0.01, dt = 0.005)
+# implicit: fix etd scheme implicit, and shardlow: LAMMPS's fix shardlow with dpd/fdt/energy, each
+# at its largest step within tolerance for GW m = 0.01 in the accuracy matrix: 0.005 and 0.004)
 setups=(
   "dpd/gen, 2 ranks|2|0|dpd/gen|nve"
   "dpd/gen/kk, 1 rank x 2 threads|1|2|dpd/gen|nve"
@@ -34,6 +35,8 @@ setups=(
   "dpd/gen + fix etd implicit, 1 rank|1|0|dpd/gen|implicit"
   "dpd/gen/kk + fix etd/kk implicit, 1 rank x 2 threads|1|2|dpd/gen|implicit"
   "dpd/gen/kk + fix etd/kk implicit, 1 rank x 1 thread|1|1|dpd/gen|implicit"
+  "fix shardlow, 2 ranks|2|0|dpd/fdt/energy|shardlow"
+  "fix shardlow/kk, 1 rank x 2 threads|1|2|dpd/fdt/energy|shardlow"
 )
 mkdir -p "$here/results"
 out="$here/results/throughput.jsonl"
@@ -50,7 +53,10 @@ for round in $(seq "$rounds"); do
           -var integrator "$integrator"
           -log "$work/log" -screen none)
     bind=()    # Open MPI binds each of 1 or 2 ranks to one core: threads would share it
-    [ "$integrator" = implicit ] && args+=(-var dt 0.005)
+    case "$integrator" in  # (nve and etd: the input's defaults for their masses)
+      nve) dt=0.01 ;; etd) dt=0.002 ;; implicit) dt=0.005 ;; shardlow) dt=0.004 ;;
+    esac
+    args+=(-var dt "$dt")
     [ "$threads" != 0 ] && args+=(-k on t "$threads" -sf kk)
     [ "$threads" -gt 1 ] && bind=(--bind-to none)
     sharing=null
@@ -61,8 +67,8 @@ for round in $(seq "$rounds"); do
     # (the pair style's list: perpetual, or occasional where fix etd's own search feeds it)
     style=$(awk '/^BENCH/{b=1} /pair [a-z\/]+, (perpetual|occasional)/{s=$3} END{print s}' "$work/log")
     lammps=$(sed -n '1s/^LAMMPS (\(.*\))$/\1/p' "$work/log")
-    printf '{"round": %d, "setup": "%s", "pair_style": "%s", "integrator": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "loop_s": %s, "lammps": "%s", "cores": %d, "sharing_ms": %s}\n' \
-      "$round" "$name" "${style%,}" "$integrator" "$ranks" "$threads" "$steps" "$loop" "$lammps" "$(nproc)" "$sharing" | tee -a "$out"
+    printf '{"round": %d, "setup": "%s", "pair_style": "%s", "integrator": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "dt": %s, "loop_s": %s, "lammps": "%s", "cores": %d, "sharing_ms": %s}\n' \
+      "$round" "$name" "${style%,}" "$integrator" "$ranks" "$threads" "$steps" "$dt" "$loop" "$lammps" "$(nproc)" "$sharing" | tee -a "$out"
   done
 done
 /usr/bin/python3 "$here/table.py" "$out" | tee "$here/results/throughput.md"

@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """bench/kokkos/results/throughput.jsonl (run.sh) as a table: atom-steps per second of each
-set-up, mean +- sd over rounds, and the ratio to dpd/gen on 2 MPI ranks with the same integrator
-in the same round (mean +- sd, lowest); and, for the threaded set-ups where run.sh read the
-sharing probe just before the run (sharing_ms), the ratio in each of the machine's two states.
+set-up, mean +- sd over rounds, and the ratio to the CPU styles on 2 MPI ranks with the same
+integrator in the same round (mean +- sd, lowest); the large-step integrators at equal accuracy
+(the implicit scheme and LAMMPS's fix shardlow, each at its largest step within tolerance), in
+simulated time per second; and, for the threaded set-ups where run.sh read the sharing probe just
+before the run (sharing_ms), the ratio in each of the machine's two states.
 
 Usage: /usr/bin/python3 bench/kokkos/table.py results/throughput.jsonl > results/throughput.md
 """
@@ -14,13 +16,21 @@ import sys
 # 0.1 ms in the fast one, about 0.4 ms in the slow one on the 2-core machines measured)
 SLOW_SHARING_MS = 0.25
 
-INTEGRATORS = {"nve": "fix nve", "etd": "fix etd scheme diagonal", "implicit": "fix etd scheme implicit"}
+INTEGRATORS = {"nve": "fix nve", "etd": "fix etd scheme diagonal",
+               "implicit": "fix etd scheme implicit", "shardlow": "fix shardlow + fix nve"}
+# each integrator's step where a run does not record its own (the input's defaults, run.sh's)
+DEFAULT_DT = {"nve": 0.01, "etd": 0.002, "implicit": 0.005, "shardlow": 0.004}
+# the integrators compared at equal accuracy, and the one their ratios are taken to
+LARGE_STEP = ("implicit", "shardlow")
+PEER = "shardlow"
 
 
 def baseline(runs, integrator):
-    """The set-up of dpd/gen on 2 MPI ranks without Kokkos with this integrator."""
-    return next(r["setup"] for r in runs if r.get("integrator", "nve") == integrator
-                and r["ranks"] == 2 and r["threads"] == 0 and r["pair_style"] == "dpd/gen")
+    """The set-up on 2 MPI ranks without Kokkos with this integrator (dpd/gen where there are
+    several)."""
+    cpu = [r for r in runs if r.get("integrator", "nve") == integrator
+           and r["ranks"] == 2 and r["threads"] == 0]
+    return next((r for r in cpu if r["pair_style"] == "dpd/gen"), cpu[0])["setup"]
 
 
 def main(path):
@@ -34,11 +44,12 @@ def main(path):
     print(f"{first['atoms']:,} atoms of the standard fluid, {first['steps']} steps per run, "
           f"{len(rounds)} alternated rounds (bench/kokkos/run.sh), LAMMPS {first.get('lammps', '?')} with "
           f"KOKKOS (OpenMP backend) on {first.get('cores', '?')} cores. fix nve: m = 1, dt = 0.01; "
-          "fix etd scheme diagonal: m = 0.01, dt = 0.002; fix etd scheme implicit: m = 0.01, dt = 0.005. "
-          "Ratio: to dpd/gen on 2 MPI ranks with the "
-          "same integrator, in the same round.")
+          "fix etd scheme diagonal: m = 0.01, dt = 0.002; fix etd scheme implicit: m = 0.01, dt = 0.005; "
+          "fix shardlow (pair dpd/fdt/energy): m = 0.01, dt = 0.004. "
+          "Ratio: to the CPU styles on 2 MPI ranks with the "
+          "same integrator (dpd/gen where there are several), in the same round.")
     print()
-    print("| set-up | integrator | pair style run | atom-steps/s (mean +- sd) | ratio to dpd/gen on 2 ranks (lowest) |")
+    print("| set-up | integrator | pair style run | atom-steps/s (mean +- sd) | ratio to 2 ranks (lowest) |")
     print("|---|---|---|---|---|")
     for setup in setups:
         run = next(r for r in runs if r["setup"] == setup)
@@ -50,7 +61,53 @@ def main(path):
         print(f"| {setup} | {INTEGRATORS[integrator]} | {run['pair_style']} | "
               f"{statistics.mean(rates):.3e} +- {sd(rates):.1e} | "
               f"{statistics.mean(ratios):.3f} +- {sd(ratios):.3f} ({min(ratios):.3f}) |")
+    equal_accuracy(runs, rounds, loop)
     states(runs, rounds, loop)
+
+
+def equal_accuracy(runs, rounds, loop):
+    """The large-step integrators in simulated time (atoms x time units) per second, each at its
+    own step, against the peer on 2 ranks and against the peer with the same ranks and threads."""
+    large = [s for s in dict.fromkeys(r["setup"] for r in runs)
+             if next(r for r in runs if r["setup"] == s).get("integrator") in LARGE_STEP]
+    if not any(next(r for r in runs if r["setup"] == s)["integrator"] == PEER for s in large):
+        return
+    peer_base = baseline(runs, PEER)
+    first = {s: next(r for r in runs if r["setup"] == s) for s in large}
+
+    def rate(k, setup):
+        run = first[setup]
+        return run["atoms"] * run["steps"] * run.get("dt", DEFAULT_DT[run["integrator"]]) / loop[(k, setup)]
+
+    def peer_alike(setup):
+        """The peer's set-up with the same ranks and threads, if any."""
+        return next((s for s in large if first[s]["integrator"] == PEER
+                     and (first[s]["ranks"], first[s]["threads"])
+                     == (first[setup]["ranks"], first[setup]["threads"])), None)
+
+    sd = statistics.stdev if len(rounds) > 1 else (lambda values: 0.0)
+    print()
+    print("At equal accuracy: the implicit scheme and LAMMPS's fix shardlow, each at its largest step "
+          "within tolerance on every observable for GW m = 0.01 (bench/accuracy: 0.005 and 0.004), "
+          "in simulated time per second (atoms x time units / s = atom-steps/s x dt). Ratios in the "
+          "same round.")
+    print()
+    print("| set-up | dt | atom-time/s (mean +- sd) | ratio to fix shardlow on 2 ranks (lowest) | "
+          "ratio to shardlow with the same ranks and threads (lowest) |")
+    print("|---|---|---|---|---|")
+    for setup in large:
+        rates = [rate(k, setup) for k in rounds]
+        to_base = [rate(k, setup) / rate(k, peer_base) for k in rounds]
+        alike = peer_alike(setup)
+        to_alike = "-"
+        if alike is not None and alike != setup:
+            values = [rate(k, setup) / rate(k, alike) for k in rounds]
+            to_alike = (f"{statistics.mean(values):.2f} +- {sd(values):.2f} ({min(values):.2f}) "
+                        f"to {alike}")
+        run = first[setup]
+        print(f"| {setup} | {run.get('dt', DEFAULT_DT[run['integrator']])} | "
+              f"{statistics.mean(rates):.3e} +- {sd(rates):.1e} | "
+              f"{statistics.mean(to_base):.2f} +- {sd(to_base):.2f} ({min(to_base):.2f}) | {to_alike} |")
 
 
 def states(runs, rounds, loop):
@@ -62,7 +119,7 @@ def states(runs, rounds, loop):
     print("By the state of the machine just before the run (bench/kokkos/sharing_probe.cpp, two "
           f"passes split differently on 2 threads: fast below {SLOW_SHARING_MS} ms, slow above):")
     print()
-    print("| set-up | state | rounds | probe (ms) | ratio to dpd/gen on 2 ranks (each round) |")
+    print("| set-up | state | rounds | probe (ms) | ratio to 2 ranks (each round) |")
     print("|---|---|---|---|---|")
     for setup in dict.fromkeys(r["setup"] for r in probed):
         base = baseline(runs, next(r for r in probed if r["setup"] == setup).get("integrator", "nve"))
