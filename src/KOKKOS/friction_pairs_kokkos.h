@@ -81,6 +81,20 @@ template <class DeviceType> class FrictionPairsKokkos {
     // where each listed atom's candidates start (the list's rows, end to end)
     const int ncandidates = row_starts(in);
     if (!list_in_place_) flatten_list(in, ncandidates);
+    upload_atoms(in, tag);
+    const bool any_fixed = stage_pairs(in, ncandidates);
+    place_pairs(in.inum);
+    pack_pairs(in.step);
+    return any_fixed;
+  }
+
+  // (The kernels' launchers below are public: CUDA requires the function enclosing a device
+  // lambda to be.)
+
+  // The step's atoms in DeviceType's memory: the listed rows, positions, types, masks, the
+  // ghosts' partners and, under moving images, their image counts; tag: the atom IDs (nall)
+  template <typename Tag> void upload_atoms(const Input &in, const Tag *tag)
+  {
     kk::upload(ilist_, in.ilist, in.inum);
     kk::upload(x_, in.x, 3 * in.nall);
     kk::upload(type_, in.type, in.nall);
@@ -89,16 +103,18 @@ template <class DeviceType> class FrictionPairsKokkos {
     moving_images_ = in.image != nullptr;
     if (moving_images_) kk::upload(image_, in.image + 6 * in.nlocal, 6 * (in.nall - in.nlocal));
     kk::grow(tag_, in.nall);
-    {
-      auto h_tag = Kokkos::create_mirror_view(tag_);
-      for (int a = 0; a < in.nall; a++) h_tag(a) = static_cast<std::int64_t>(tag[a]);
-      Kokkos::deep_copy(tag_, h_tag);
-    }
+    auto h_tag = Kokkos::create_mirror_view(tag_);
+    for (int a = 0; a < in.nall; a++) h_tag(a) = static_cast<std::int64_t>(tag[a]);
+    Kokkos::deep_copy(tag_, h_tag);
+  }
+
+  // One pass over the candidates: each listed atom's pairs written from its first candidate's
+  // slot on (staged_), and how many it has (pair_start_); returns whether a pair has an atom
+  // outside the group
+  bool stage_pairs(const Input &in, int ncandidates)
+  {
     const Candidates candidates = candidates_of(in);
     auto candidate_start = list_start_;
-
-    // one pass over the candidates: each atom's pairs written from its first candidate's slot
-    // on, how many it has, and whether one has an atom outside the group
     kk::grow(pair_start_, in.inum + 1);
     staged_.grow(ncandidates, moving_images_);
     kk::grow(staged_tag_j_, ncandidates);
@@ -110,9 +126,7 @@ template <class DeviceType> class FrictionPairsKokkos {
     const int nlocal = in.nlocal, deform_groupbit = in.deform_groupbit;
     double rate[6];
     for (int k = 0; k < 6; k++) rate[k] = in.image_rate[k];
-    const PairNoise noise = noise_;
     auto tags = tag_;
-    const std::int64_t step = in.step;
     int fixed = 0;
     Kokkos::parallel_reduce(
         "etd:pairs_fill", Kokkos::RangePolicy<execution_space>(0, in.inum),
@@ -144,28 +158,47 @@ template <class DeviceType> class FrictionPairsKokkos {
           pair_start(ii) = at - first;
         },
         Kokkos::Max<int>(fixed));
-    // where each atom's pairs start (exclusive scan; the last entry is the total)
+    return fixed > 0;    // (Max starts from the lowest int, where no atom is listed)
+  }
+
+  // where each of the inum listed atoms' pairs start (an exclusive scan of the counts that
+  // stage_pairs() left in pair_start_; the last entry is the total)
+  void place_pairs(int inum)
+  {
+    auto pair_start = pair_start_;
+    const int listed = inum;
     int total = 0;
     Kokkos::parallel_scan(
-        "etd:pairs_place", Kokkos::RangePolicy<execution_space>(0, in.inum + 1),
+        "etd:pairs_place", Kokkos::RangePolicy<execution_space>(0, inum + 1),
         KOKKOS_LAMBDA(const int ii, int &sum, const bool final) {
-          const int count = ii < candidates.inum ? pair_start(ii) : 0;
+          const int count = ii < listed ? pair_start(ii) : 0;
           if (final) pair_start(ii) = sum;
           sum += count;
         },
         total);
     npairs_ = total;
-    inum_ = in.inum;
-    kk::grow(pair_i_, total);
-    packed_.grow(total, moving);
+    inum_ = inum;
+  }
+
+  // The staged pairs moved together, in the list's order, each noise amplitude times its
+  // Gaussian for this step (a pass of its own, as the host assembly draws them: the staging
+  // pass, without the generator, overlaps the square roots of successive pairs)
+  void pack_pairs(std::int64_t step)
+  {
+    kk::grow(pair_i_, npairs_);
+    packed_.grow(npairs_, moving_images_);
     auto pair_i = pair_i_;
     const PairArrays packed = packed_;
+    const PairArrays staged = staged_;
+    auto staged_tag_j = staged_tag_j_;
     auto ilist = ilist_;
-    // the pairs moved together, in the list's order, each noise amplitude times its Gaussian (a
-    // pass of its own, as the host assembly draws them: the pass above, without the generator,
-    // overlaps the square roots of successive pairs)
+    auto tags = tag_;
+    auto pair_start = pair_start_;
+    auto candidate_start = list_start_;
+    const bool moving = moving_images_;
+    const PairNoise noise = noise_;
     Kokkos::parallel_for(
-        "etd:pairs_pack", Kokkos::RangePolicy<execution_space>(0, in.inum),
+        "etd:pairs_pack", Kokkos::RangePolicy<execution_space>(0, inum_),
         KOKKOS_LAMBDA(const int ii) {
           const int i = ilist(ii);
           const std::int64_t tag_i = tags(i);
@@ -175,7 +208,6 @@ template <class DeviceType> class FrictionPairsKokkos {
             packed.noise(to) = staged.noise(at) * noise.gaussian(tag_i, staged_tag_j(at), step);
           }
         });
-    return fixed > 0;    // (Max starts from the lowest int, where no atom is listed)
   }
 
   int pairs() const { return npairs_; }
