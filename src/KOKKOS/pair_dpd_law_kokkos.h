@@ -100,6 +100,9 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   void use_host_loop();
   void copy_ziggurat_tables();
   void compute_on_device(int eflag, int vflag);
+  void bind_atoms();
+  void make_scatter_views();
+  void per_atom_tallies_to_host();
   template <int NEIGHFLAG> void launch(int inum, EV_FLOAT &ev);
   template <int NEIGHFLAG, int FRICTION, int SPLIT> void launch_with(int inum, EV_FLOAT &ev);
   void extras_to_device(bool extras);

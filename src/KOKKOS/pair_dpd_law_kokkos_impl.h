@@ -148,6 +148,40 @@ template <class DeviceType, class Style>
 void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag)
 {
   this->ev_init(eflag, vflag, 0);
+  bind_atoms();
+  make_scatter_views();
+  const bool extras = this->prepare_extras();
+  extras_to_device(extras);
+
+  EV_FLOAT ev;
+  this->copymode = 1;
+  if (neighflag == HALF)
+    launch<HALF>(this->list->inum, ev);
+  else
+    launch<HALFTHREAD>(this->list->inum, ev);
+  if (need_dup) Kokkos::Experimental::contribute(f, dup_f);
+  extras_to_host(extras);
+
+  if (this->eflag_global) this->eng_vdwl += ev.evdwl;
+  if (this->vflag_global)
+    for (int k = 0; k < 6; k++) this->virial[k] += ev.v[k];
+  if (this->vflag_fdotr) pair_virial_fdotr_compute(this);
+  per_atom_tallies_to_host();
+  this->copymode = 0;
+  this->atomKK->modified(this->execution_space,
+                         this->evflag ? (F_MASK | ENERGY_MASK | VIRIAL_MASK) : F_MASK);
+  if (need_dup) {
+    dup_eatom = {};
+    dup_vatom = {};
+  }
+  // the ghosts' parts of the extras onto their owners, on the host arrays
+  this->finish_extras(extras);
+}
+
+// This compute's per-atom tallies (as requested), the atoms' arrays in DeviceType's memory, the
+// scalars the kernel reads, and LAMMPS's Kokkos list
+template <class DeviceType, class Style> void PairDPDLawKokkos<DeviceType, Style>::bind_atoms()
+{
   if (this->eflag_atom) {
     this->memoryKK->destroy_kokkos(k_eatom, this->eatom);
     this->memoryKK->create_kokkos(k_eatom, this->eatom, this->maxeatom, "pair:eatom");
@@ -177,8 +211,14 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
   d_numneigh = k_list->d_numneigh;
   d_neighbors = k_list->d_neighbors;
   d_ilist = k_list->d_ilist;
+}
 
-  // as KokkosLMP::need_dup, for the kernel's own flag (the package's may be FULL)
+// The scatter views the kernel adds forces and tallies through: duplicated per thread where
+// threads share a half list (as KokkosLMP::need_dup, for the kernel's own flag: the package's
+// may be FULL), else atomic or plain
+template <class DeviceType, class Style>
+void PairDPDLawKokkos<DeviceType, Style>::make_scatter_views()
+{
   need_dup = neighflag == HALFTHREAD &&
       std::is_same_v<NeedDup_v<HALFTHREAD, DeviceType>, Kokkos::Experimental::ScatterDuplicated>;
   if (need_dup) {
@@ -194,23 +234,12 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
     ndup_vatom =
         Kokkos::Experimental::create_scatter_view<KKScatterSum, KKScatterNonDuplicated>(d_vatom);
   }
+}
 
-  const bool extras = this->prepare_extras();
-  extras_to_device(extras);
-
-  EV_FLOAT ev;
-  this->copymode = 1;
-  if (neighflag == HALF)
-    launch<HALF>(this->list->inum, ev);
-  else
-    launch<HALFTHREAD>(this->list->inum, ev);
-  if (need_dup) Kokkos::Experimental::contribute(f, dup_f);
-  extras_to_host(extras);
-
-  if (this->eflag_global) this->eng_vdwl += ev.evdwl;
-  if (this->vflag_global)
-    for (int k = 0; k < 6; k++) this->virial[k] += ev.v[k];
-  if (this->vflag_fdotr) pair_virial_fdotr_compute(this);
+// the per-atom energy and virial, summed over the threads' copies, into LAMMPS's host arrays
+template <class DeviceType, class Style>
+void PairDPDLawKokkos<DeviceType, Style>::per_atom_tallies_to_host()
+{
   if (this->eflag_atom) {
     if (need_dup) Kokkos::Experimental::contribute(d_eatom, dup_eatom);
     k_eatom.template modify<DeviceType>();
@@ -223,15 +252,6 @@ void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag
     k_vatom.template modify<DeviceType>();
     k_vatom.sync_host();
   }
-  this->copymode = 0;
-  this->atomKK->modified(this->execution_space,
-                         this->evflag ? (F_MASK | ENERGY_MASK | VIRIAL_MASK) : F_MASK);
-  if (need_dup) {
-    dup_eatom = {};
-    dup_vatom = {};
-  }
-  // the ghosts' parts of the extras onto their owners, on the host arrays
-  this->finish_extras(extras);
 }
 
 // The extras' views for the kernel: the host arrays that prepare_extras() sized and zeroed
