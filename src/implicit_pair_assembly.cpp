@@ -92,7 +92,7 @@ void FrictionPairAssembly::clear(bool moving_images, int nlocal)
 
 // inlined into build()'s pair loop: a call per pair there would keep the processor from
 // overlapping the square roots of successive pairs
-ETD_PAIR_INLINE void FrictionPairAssembly::add_dpd_pair(const PairCoefficients &c, int i,
+ETD_HOST_INLINE void FrictionPairAssembly::add_dpd_pair(const PairCoefficients &c, int i,
                                                         int partner, const double d[3], double rsq,
                                                         double factor,
                                                         std::pair<tagint, tagint> tags)

@@ -300,7 +300,7 @@ void PairDPDBase::eval(const typename Law::Coefficients *table, int stride, int 
 
 // The pair's contributions to the friction diagonal (i's summed in gi, gri) and to the split.
 template <class Law, int FRICTION, int SPLIT>
-ETD_PAIR_INLINE void PairDPDBase::add_extras(const Law &pair, int i, int j, bool update_j,
+ETD_HOST_INLINE void PairDPDBase::add_extras(const Law &pair, int i, int j, bool update_j,
                                              double *gi, double *gri)
 {
   if (FRICTION && want_friction) {
@@ -335,7 +335,7 @@ ETD_PAIR_INLINE void PairDPDBase::add_extras(const Law &pair, int i, int j, bool
 // The pair's energy and virial: from |F|/r where the force is central (as LAMMPS's pair styles
 // tally), else from its components.
 template <class Law, int DISSIPATIVE>
-ETD_PAIR_INLINE void PairDPDBase::tally(const Law &pair, const typename Law::Coefficients &c,
+ETD_HOST_INLINE void PairDPDBase::tally(const Law &pair, const typename Law::Coefficients &c,
                                         const etd::PairGeometry &g, int i, int j, int nlocal,
                                         int newton_pair)
 {

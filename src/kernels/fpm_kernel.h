@@ -217,32 +217,32 @@ class FpmLaw {
 
   FpmLaw(const Coefficients &c, const PairGeometry &g) : c_(c), g_(g) {}
 
-  template <bool DISSIPATIVE> ETD_PAIR_INLINE void evaluate(const PairMotion &m, const PairStep &s)
+  template <bool DISSIPATIVE> ETD_HOST_INLINE void evaluate(const PairMotion &m, const PairStep &s)
   {
     dissipative_ = DISSIPATIVE;
-    if (!DISSIPATIVE) {
+    if constexpr (!DISSIPATIVE) {
       fpair = fpm_conservative(c_, g_.r, g_.special) / g_.r;
       for (int k = 0; k < 3; k++) force[k] = g_.del[k] * fpair;
-      return;
-    }
-    double v_ij[3], omega_sum[3];
-    for (int k = 0; k < 3; k++) {
-      v_ij[k] = m.v_i[k] - m.v_j[k];
-      omega_sum[k] = m.omega_i[k] + m.omega_j[k];
-    }
-    double theta[4];
-    pair_gaussians4(s.noise, m.tag_i, m.tag_j, s.timestep, theta);
-    FpmNoise noise;
-    noise.central = theta[0];
-    for (int k = 0; k < 3; k++) noise.shear[k] = theta[k + 1];
-    pr_ = fpm_pair(c_, g_.del, g_.r, v_ij, omega_sum, noise, s.inv_sqrt_dt, g_.special);
-    for (int k = 0; k < 3; k++) {
-      force[k] = pr_.force(k);
-      torque[k] = pr_.torque[k];
+    } else {
+      double v_ij[3], omega_sum[3];
+      for (int k = 0; k < 3; k++) {
+        v_ij[k] = m.v_i[k] - m.v_j[k];
+        omega_sum[k] = m.omega_i[k] + m.omega_j[k];
+      }
+      double theta[4];
+      pair_gaussians4(s.noise, m.tag_i, m.tag_j, s.timestep, theta);
+      FpmNoise noise;
+      noise.central = theta[0];
+      for (int k = 0; k < 3; k++) noise.shear[k] = theta[k + 1];
+      pr_ = fpm_pair(c_, g_.del, g_.r, v_ij, omega_sum, noise, s.inv_sqrt_dt, g_.special);
+      for (int k = 0; k < 3; k++) {
+        force[k] = pr_.force(k);
+        torque[k] = pr_.torque[k];
+      }
     }
   }
 
-  ETD_PAIR_INLINE void friction_diagonal(double g[3], double g_rot[3]) const
+  ETD_HOST_INLINE void friction_diagonal(double g[3], double g_rot[3]) const
   {
     const double e[3] = {g_.del[0] * g_.rinv, g_.del[1] * g_.rinv, g_.del[2] * g_.rinv};
     fpm_translational_friction(pr_.central_friction, pr_.shear_friction, e, g);
@@ -250,7 +250,7 @@ class FpmLaw {
   }
 
   // the torque's parts are the same on i and j
-  ETD_PAIR_INLINE void split(double parts[3][3], double torque_parts[2][3]) const
+  ETD_HOST_INLINE void split(double parts[3][3], double torque_parts[2][3]) const
   {
     if (!dissipative_) {
       const double fc = fpm_conservative(c_, g_.r, g_.special);

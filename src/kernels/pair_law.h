@@ -18,7 +18,8 @@
 //   static double energy(const Coefficients &, double rsq, double r, double special);
 //       the conservative force along e and its energy (zero beyond the conservative cutoff),
 //       for the energy tally and Pair::single.
-// evaluate, friction_diagonal and split are declared ETD_PAIR_INLINE.
+// evaluate, friction_diagonal and split are declared ETD_PAIR_INLINE, or ETD_HOST_INLINE for a
+// law that no device kernel runs (dpd/fpm's).
 #ifndef ETD_PAIR_LAW_H
 #define ETD_PAIR_LAW_H
 
@@ -38,6 +39,14 @@
 #else
 #define ETD_PAIR_INLINE inline
 #define ETD_PAIR_NOINLINE
+#endif
+// The same inlining for the host's pair loop alone (a law that no device kernel runs, the CPU
+// loop's helpers): never compiled for a device, so that a CUDA build does not take host-only
+// code for device code
+#if defined(__GNUC__)
+#define ETD_HOST_INLINE inline __attribute__((always_inline))
+#else
+#define ETD_HOST_INLINE inline
 #endif
 
 namespace etd {
