@@ -3,8 +3,9 @@
 # LAMMPS's dpd/kk and dpd, with fix nve, fix etd and fix etd scheme implicit on 24,000 atoms of
 # the standard fluid; and the implicit scheme beside LAMMPS's fix shardlow and fix shardlow/kk at
 # equal accuracy; all with the KOKKOS LAMMPS of tools/kokkos (one binary). The set-ups run alternated, ROUNDS times over, in
-# one sitting; each run's loop time goes to results/throughput.jsonl (replaced), and
-# table.py turns it into results/throughput.md.
+# one sitting; each run's loop time goes to results/throughput.jsonl (replaced; with
+# ETD_DPD_BENCH_APPEND=1 this sitting's rounds are added after those there, with the same
+# STEPS), and table.py turns it into results/throughput.md.
 #   KOKKOS_SOURCE=... ETD_DPD_LAMMPS=trixie bash bench/kokkos/run.sh [ROUNDS [STEPS]]
 # The machine should be otherwise idle.
 set -euo pipefail
@@ -40,13 +41,21 @@ setups=(
 )
 mkdir -p "$here/results"
 out="$here/results/throughput.jsonl"
-: >"$out"
+first_round=1 sitting=1
+if [ "${ETD_DPD_BENCH_APPEND:-0}" = 1 ] && [ -s "$out" ]; then
+  read -r first_round sitting < <(/usr/bin/python3 -c '
+import json, sys
+runs = [json.loads(line) for line in open(sys.argv[1]) if line.strip()]
+print(max(r["round"] for r in runs) + 1, max(r.get("sitting", 1) for r in runs) + 1)' "$out")
+else
+  : >"$out"
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # the two cores' cost of sharing data (sharing_probe.cpp), read just before each run on 2 or more
 # threads: its two states on this kind of machine decide that run's speed
 g++ -O2 -fopenmp "$here/sharing_probe.cpp" -o "$work/sharing_probe"
-for round in $(seq "$rounds"); do
+for round in $(seq "$first_round" $((first_round + rounds - 1))); do
   for setup in "${setups[@]}"; do
     IFS='|' read -r name ranks threads pair integrator <<<"$setup"
     args=(-in "$here/in.kokkos_throughput" -var plugin "$plugin" -var pair "$pair" -var steps "$steps"
@@ -67,8 +76,8 @@ for round in $(seq "$rounds"); do
     # (the pair style's list: perpetual, or occasional where fix etd's own search feeds it)
     style=$(awk '/^BENCH/{b=1} /pair [a-z\/]+, (perpetual|occasional)/{s=$3} END{print s}' "$work/log")
     lammps=$(sed -n '1s/^LAMMPS (\(.*\))$/\1/p' "$work/log")
-    printf '{"round": %d, "setup": "%s", "pair_style": "%s", "integrator": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "dt": %s, "loop_s": %s, "lammps": "%s", "cores": %d, "sharing_ms": %s}\n' \
-      "$round" "$name" "${style%,}" "$integrator" "$ranks" "$threads" "$steps" "$dt" "$loop" "$lammps" "$(nproc)" "$sharing" | tee -a "$out"
+    printf '{"sitting": %d, "round": %d, "setup": "%s", "pair_style": "%s", "integrator": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "dt": %s, "loop_s": %s, "lammps": "%s", "cores": %d, "sharing_ms": %s}\n' \
+      "$sitting" "$round" "$name" "${style%,}" "$integrator" "$ranks" "$threads" "$steps" "$dt" "$loop" "$lammps" "$(nproc)" "$sharing" | tee -a "$out"
   done
 done
 /usr/bin/python3 "$here/table.py" "$out" | tee "$here/results/throughput.md"

@@ -42,7 +42,8 @@ def main(path):
     first = runs[0]
     work = first["atoms"] * first["steps"]
     print(f"{first['atoms']:,} atoms of the standard fluid, {first['steps']} steps per run, "
-          f"{len(rounds)} alternated rounds (bench/kokkos/run.sh), LAMMPS {first.get('lammps', '?')} with "
+          f"{len(rounds)} alternated rounds in {len({r.get('sitting', 1) for r in runs})} sitting(s) "
+          f"(bench/kokkos/run.sh), LAMMPS {first.get('lammps', '?')} with "
           f"KOKKOS (OpenMP backend) on {first.get('cores', '?')} cores. fix nve: m = 1, dt = 0.01; "
           "fix etd scheme diagonal: m = 0.01, dt = 0.002; fix etd scheme implicit: m = 0.01, dt = 0.005; "
           "fix shardlow (pair dpd/fdt/energy): m = 0.01, dt = 0.004. "
