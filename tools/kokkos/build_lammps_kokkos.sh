@@ -36,12 +36,13 @@
 #                    build that Kokkos as its stand-in (kokkos-4.6.1-as-5.patch on a copy)
 #   ETD_DPD_DEBIAN_MIRROR  (default http://deb.debian.org/debian)
 set -euo pipefail
+log() { printf '[etd-dpd] %s\n' "$*" >&2; }
+die() { printf '[etd-dpd] ERROR: %s\n' "$*" >&2; exit 1; }
 print_prefix=no
 for arg in "$@"; do
   case "$arg" in
     --print-prefix) print_prefix=yes ;;
-    *) printf '[etd-dpd] ERROR: build_lammps_kokkos.sh: unknown argument %s (--print-prefix)\n' "$arg" >&2
-       exit 2 ;;
+    *) die "build_lammps_kokkos.sh: unknown argument $arg (--print-prefix)" ;;
   esac
 done
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -49,8 +50,6 @@ cache=${ETD_DPD_CACHE:-$HOME/.cache/etd-dpd}
 jobs=${ETD_DPD_JOBS:-$(nproc)}
 mirror=${ETD_DPD_DEBIAN_MIRROR:-http://deb.debian.org/debian}
 ksuite=${ETD_DPD_KOKKOS_SUITE:-sid}
-log() { printf '[etd-dpd] %s\n' "$*" >&2; }
-die() { printf '[etd-dpd] ERROR: %s\n' "$*" >&2; exit 1; }
 
 # ---- Kokkos source: Debian's kokkos orig tarball, verified ------------------------------
 ksrcdir="$cache/src-$ksuite-kokkos"
