@@ -17,16 +17,10 @@ check() {  # WHAT CONDITION...
 }
 
 # stubs: a LAMMPS that asks for Kokkos 5 (and one that asks for 4), a Kokkos 4.6.1
-stub_lammps() {  # DIR KOKKOS_MAJOR
-  mkdir -p "$1/src" "$1/cmake/Modules/Packages"
-  echo '#define LAMMPS_VERSION "4 Jul 2026"' >"$1/src/version.h"
-  echo "  find_package(Kokkos $2.1.0 REQUIRED CONFIG)" >"$1/cmake/Modules/Packages/KOKKOS.cmake"
-}
+. "$root/unittest/kokkos_tool_stubs.sh"
 stub_lammps "$work/lammps5" 5
 stub_lammps "$work/lammps4" 4
-mkdir -p "$work/kokkos"
-printf 'set(Kokkos_VERSION_MAJOR 4)\nset(Kokkos_VERSION_MINOR 6)\nset(Kokkos_VERSION_PATCH 1)\n' \
-  >"$work/kokkos/CMakeLists.txt"
+stub_kokkos "$work/kokkos"
 # a second copy of the tools, whose stand-in patch can be changed
 mkdir -p "$work/copy/tools/kokkos"
 cp "$root/tools/kokkos/build_lammps_kokkos.sh" "$root"/tools/kokkos/*.patch "$work/copy/tools/kokkos/"

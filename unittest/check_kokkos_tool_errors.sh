@@ -34,11 +34,9 @@ expect_error "gpu.sh warmup not a number" "--warmup -5" bash "$gpu" --warmup -5
 expect_error "gpu.sh timeout not a number" "--timeout 1m" bash "$gpu" --timeout 1m
 
 # stub trees: a LAMMPS that asks find_package(Kokkos 5.1.0), a Kokkos 4.6.1
-mkdir -p "$work/lammps/src" "$work/lammps/cmake/Modules/Packages" "$work/kokkos"
-echo '#define LAMMPS_VERSION "4 Jul 2026"' >"$work/lammps/src/version.h"
-echo '  find_package(Kokkos 5.1.0 REQUIRED CONFIG)' >"$work/lammps/cmake/Modules/Packages/KOKKOS.cmake"
-printf 'set(Kokkos_VERSION_MAJOR 4)\nset(Kokkos_VERSION_MINOR 6)\nset(Kokkos_VERSION_PATCH 1)\n' \
-  >"$work/kokkos/CMakeLists.txt"
+. "$root/unittest/kokkos_tool_stubs.sh"
+stub_lammps "$work/lammps" 5
+stub_kokkos "$work/kokkos"
 build=$root/tools/kokkos/build_lammps_kokkos.sh
 expect_error "build_lammps_kokkos.sh unknown argument" "unknown argument --bogus" bash "$build" --bogus
 expect_error "build_lammps_kokkos.sh Kokkos 4.6 for a LAMMPS that asks for 5" \
