@@ -18,8 +18,6 @@ SLOW_SHARING_MS = 0.25
 
 INTEGRATORS = {"nve": "fix nve", "etd": "fix etd scheme diagonal",
                "implicit": "fix etd scheme implicit", "shardlow": "fix shardlow + fix nve"}
-# each integrator's step where a run does not record its own (the input's defaults, run.sh's)
-DEFAULT_DT = {"nve": 0.01, "etd": 0.002, "implicit": 0.005, "shardlow": 0.004}
 # the integrators compared at equal accuracy, and the one their ratios are taken to
 LARGE_STEP = ("implicit", "shardlow")
 PEER = "shardlow"
@@ -69,16 +67,18 @@ def main(path):
 def equal_accuracy(runs, rounds, loop):
     """The large-step integrators in simulated time (atoms x time units) per second, each at its
     own step, against the peer on 2 ranks and against the peer with the same ranks and threads."""
-    large = [s for s in dict.fromkeys(r["setup"] for r in runs)
-             if next(r for r in runs if r["setup"] == s).get("integrator") in LARGE_STEP]
-    if not any(next(r for r in runs if r["setup"] == s)["integrator"] == PEER for s in large):
+    first = {}    # each large-step set-up's first run, in the runs' order
+    for r in runs:
+        if r.get("integrator") in LARGE_STEP:
+            first.setdefault(r["setup"], r)
+    if not any(r["integrator"] == PEER for r in first.values()):
         return
+    large = list(first)
     peer_base = baseline(runs, PEER)
-    first = {s: next(r for r in runs if r["setup"] == s) for s in large}
 
     def rate(k, setup):
         run = first[setup]
-        return run["atoms"] * run["steps"] * run.get("dt", DEFAULT_DT[run["integrator"]]) / loop[(k, setup)]
+        return run["atoms"] * run["steps"] * run["dt"] / loop[(k, setup)]
 
     def peer_alike(setup):
         """The peer's set-up with the same ranks and threads, if any."""
@@ -106,7 +106,7 @@ def equal_accuracy(runs, rounds, loop):
             to_alike = (f"{statistics.mean(values):.2f} +- {sd(values):.2f} ({min(values):.2f}) "
                         f"to {alike}")
         run = first[setup]
-        print(f"| {setup} | {run.get('dt', DEFAULT_DT[run['integrator']])} | "
+        print(f"| {setup} | {run['dt']} | "
               f"{statistics.mean(rates):.3e} +- {sd(rates):.1e} | "
               f"{statistics.mean(to_base):.2f} +- {sd(to_base):.2f} ({min(to_base):.2f}) | {to_alike} |")
 
