@@ -2,10 +2,10 @@
 # Threads against ranks: dpd/gen/kk (Kokkos OpenMP) beside dpd/gen on MPI ranks and beside
 # LAMMPS's dpd/kk and dpd, with fix nve, fix etd and fix etd scheme implicit on 24,000 atoms of
 # the standard fluid; and the implicit scheme beside LAMMPS's fix shardlow and fix shardlow/kk at
-# equal accuracy; all with the KOKKOS LAMMPS of tools/kokkos (one binary). The set-ups run alternated, ROUNDS times over, in
-# one sitting; each run's loop time goes to results/throughput.jsonl (replaced; with
-# ETD_DPD_BENCH_APPEND=1 this sitting's rounds are added after those there, with the same
-# STEPS), and table.py turns it into results/throughput.md.
+# equal accuracy; all with the KOKKOS LAMMPS of tools/kokkos (one binary). The set-ups run
+# alternated, ROUNDS times over, in one sitting; each run's loop time goes to
+# results/throughput.jsonl (replaced; with ETD_DPD_BENCH_APPEND=1 this sitting's rounds are added
+# after those there, with the same STEPS), and table.py turns it into results/throughput.md.
 #   KOKKOS_SOURCE=... ETD_DPD_LAMMPS=trixie bash bench/kokkos/run.sh [ROUNDS [STEPS]]
 # The machine should be otherwise idle.
 set -euo pipefail

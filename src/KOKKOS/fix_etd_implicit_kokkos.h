@@ -2,10 +2,11 @@
 // images) the friction step runs in Kokkos kernels in DeviceType's execution space: the pairs'
 // assembly with their noise (friction_pairs_kokkos.h), the right-hand side and G applied (pair by
 // pair on the host's threads, atom by atom on a device; friction_operator_kokkos.h), the
-// block-Jacobi preconditioner and conjugate gradients (friction_solve_kokkos.h). The scheme's pair search (binning, slabs of
-// cells; the same list) and the step's loops over the atoms (kicks, drifts, the momentum
-// correction) run on the host's threads (FixETDImplicit::threads), on the host also where the
-// kernels run on a device; at steps that tally the virial or the force split the pairs are copied back to the host, where those are summed.
+// block-Jacobi preconditioner and conjugate gradients (friction_solve_kokkos.h). The scheme's
+// pair search (binning, slabs of cells; the same list) and the step's loops over the atoms
+// (kicks, drifts, the momentum correction) run on the host's threads (FixETDImplicit::threads),
+// on the host also where the kernels run on a device; at steps that tally the virial or the
+// force split the pairs are copied back to the host, where those are summed.
 // Under fix deform ... remap v the pairs carry their images' velocities. The zero-mass limit
 // (overdamped yes) runs in the same kernels (two assemblies and solves a step, each at its own
 // positions; the solve deflated where G is singular), with its impulse and the friction of atoms

@@ -4,9 +4,9 @@
 // FrictionPairAssembly::build() and in its order (atom by atom, in the list's order), so the
 // noise and the solve's sums are the host assembly's. Pure Kokkos (no LAMMPS); dpd/gen-type
 // pairs only (no dpd/fpm). Under moving images (fix deform ... remap v) each pair also carries
-// the velocity its ghost's image has on top of its owner's. One pass over the candidates writes each atom's
-// pairs from the slot of its first candidate on; a scan of the counts places them, and a copy
-// packs them together.
+// the velocity its ghost's image has on top of its owner's. One pass over the candidates writes
+// each atom's pairs from the slot of its first candidate on (stage_pairs), a scan of the counts
+// places them (place_pairs), and a copy packs them together (pack_pairs).
 #ifndef ETD_FRICTION_PAIRS_KOKKOS_H
 #define ETD_FRICTION_PAIRS_KOKKOS_H
 

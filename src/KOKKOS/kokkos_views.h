@@ -1,7 +1,7 @@
 // ETD-DPD: what the Kokkos kernels of the implicit scheme share (friction_pairs_kokkos.h,
-// friction_operator_kokkos.h, friction_solve_kokkos.h) and the pair style's kernel uses too: the views a step's pairs live
-// in, growing a work view, moving arrays between the host and DeviceType's memory, and the
-// noise's ziggurat tables in device memory. Pure Kokkos (no LAMMPS).
+// friction_operator_kokkos.h, friction_solve_kokkos.h) and the pair style's kernel uses too: the
+// views a step's pairs live in, growing a work view, moving arrays between the host and
+// DeviceType's memory, and the noise's ziggurat tables in device memory. Pure Kokkos (no LAMMPS).
 #ifndef ETD_KOKKOS_VIEWS_H
 #define ETD_KOKKOS_VIEWS_H
 
