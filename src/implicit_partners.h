@@ -75,6 +75,12 @@ class PartnerMap {
   {
     exchange_->exchange(values, nlocal, width);
   }
+  // the same with the values packed by the caller (PartnerExchange::swap)
+  const std::vector<int> &sent() const { return exchange_->sent(); }
+  void swap(const double *sent_values, double *slot_values, int width)
+  {
+    exchange_->swap(sent_values, slot_values, width);
+  }
   size_t memory_usage() const
   {
     return sizeof(int) * (ghost_partner_.capacity() + slot_ghost_.capacity()) +

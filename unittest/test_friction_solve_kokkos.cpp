@@ -91,6 +91,15 @@ struct Cluster {
     for (size_t s = 0; s < slot_owner.size(); s++)
       for (int k = 0; k < 3; k++) values[3 * (natoms + s) + k] = values[3 * slot_owner[s] + k];
   }
+  // the same for the kernels, which pack the values sent: this "rank" sends the slots' owners
+  // to itself
+  etd::FrictionSolveKokkos<Device>::Exchange kernel_exchange() const
+  {
+    const int slots = static_cast<int>(slot_owner.size());
+    return {slot_owner.data(), slots, [slots](const double *sent, double *slot_values) {
+              std::copy(sent, sent + 3 * slots, slot_values);
+            }};
+  }
 };
 
 struct Solves {
@@ -144,7 +153,7 @@ Solves solve_both(const Cluster &c, const std::vector<int> &mobile, bool with_st
   etd::FrictionSolveKokkos<Device> kernels;
   kernels.set_pairs(c.pairs, c.natoms, c.partners());
   s.kokkos.assign(n, 0.0);
-  const etd::FrictionSolveKokkos<Device>::Exchange exchange = [&](double *v) { c.exchange(v); };
+  const etd::FrictionSolveKokkos<Device>::Exchange exchange = c.kernel_exchange();
   s.kokkos_result = kernels.solve(inertia.data(), mobile.data(), rhs.data(), mass_weight,
                                   friction_weight, 1e-10, 500, exchange, serial_sum,
                                   s.kokkos.data(), with_start ? start.data() : nullptr,
@@ -279,7 +288,7 @@ TEST(FrictionSolveKokkos, PairsInDeviceMemoryGiveTheSameSolve)
   for (double &b : rhs) b = normal(gen);
   const std::vector<int> mobile(c.natoms, 1);
   const auto serial_sum = [](double *, int) {};
-  const etd::FrictionSolveKokkos<Device>::Exchange exchange = [&](double *v) { c.exchange(v); };
+  const etd::FrictionSolveKokkos<Device>::Exchange exchange = c.kernel_exchange();
   // the rows as the assembly gives them: one per atom, in order, empty ones included
   using Indices = etd::FrictionSolveKokkos<Device>::Indices;
   Indices rows("rows", c.natoms), row_start("row_start", c.natoms + 1);

@@ -1,5 +1,6 @@
 // PartnerExchange (src/partner_exchange.h): each rank receives exactly the values of the remote
-// atoms it asked for, in its slots, for any pattern of requests; run on 1, 2 and 4 ranks.
+// atoms it asked for, in its slots, for any pattern of requests, whether it packs the values
+// sent (exchange()) or the caller does (swap()); run on 1, 2 and 4 ranks.
 #include "partner_exchange.h"
 
 #include <gtest/gtest.h>
@@ -53,13 +54,24 @@ void exchange_round(etd::PartnerExchange &exchange, int round)
   // the owned values are left alone
   for (int i = 0; i < nlocal; i++) EXPECT_EQ(values[width * i], value_of(me, i, 0));
 
+  // the same through swap(), the caller packing the values of sent() in its order
+  std::vector<double> packed, slots(width * owner_rank.size(), -1.0);
+  for (int index : exchange.sent())
+    for (int k = 0; k < width; k++) packed.push_back(value_of(me, index, k));
+  exchange.swap(packed.data(), slots.data(), width);
+  for (size_t s = 0; s < owner_rank.size(); s++)
+    for (int k = 0; k < width; k++)
+      EXPECT_EQ(slots[width * s + k], value_of(owner_rank[s], owner_index[s], k))
+          << "rank " << me << " slot " << s << " round " << round << " (swap)";
+
   // what this rank sends equals what the others asked of it
-  int asked_of_me = 0, sent = exchange.sent_atoms();
+  int asked_of_me = 0, sent = static_cast<int>(exchange.sent().size());
   std::vector<int> asked(nprocs, 0), total(nprocs, 0);
   for (int p : owner_rank) asked[p]++;
   MPI_Allreduce(asked.data(), total.data(), nprocs, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   asked_of_me = total[me];
   EXPECT_EQ(sent, asked_of_me);
+  EXPECT_EQ(exchange.idle(), owner_rank.empty() && sent == 0);
 }
 
 }    // namespace
@@ -90,4 +102,5 @@ TEST(PartnerExchange, RefusesSlotsOwnedByThisRankOrScattered)
   exchange.exchange(values.data(), 1, 3);
   EXPECT_EQ(values[0], 7.0);
   EXPECT_EQ(exchange.slots(), 0);
+  EXPECT_TRUE(exchange.idle());
 }

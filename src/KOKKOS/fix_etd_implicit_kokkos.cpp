@@ -201,8 +201,12 @@ etd::SolverResult FixETDImplicitKokkos<DeviceType>::solve_system(
   hand_pairs_to_kernels();
   solution.resize(3 * nlocal);
   kernel_solves += 1.0;
-  const typename etd::FrictionSolveKokkos<DeviceType>::Exchange exchange =
-      [this, nlocal](double *values) { partners.exchange(values, nlocal, 3); };
+  const std::vector<int> &sent = partners.sent();
+  const typename etd::FrictionSolveKokkos<DeviceType>::Exchange exchange{
+      sent.data(), static_cast<int>(sent.size()),
+      [this](const double *sent_values, double *slot_values) {
+        partners.swap(sent_values, slot_values, 3);
+      }};
   return kernels.solve(work.inertia.data(), mobile.data(), rhs.data(), mass_weight,
                        friction_weight, options.tolerance, options.max_iterations, exchange,
                        sum_over_ranks(), solution.data(), start ? start->data() : nullptr,

@@ -10,7 +10,8 @@
 // built with the pairs, friction_incidence_kokkos.h), so no two threads write one atom. Every
 // sum has a fixed order for a given thread count. Vectors over the partners (owned atoms, then
 // one slot per remote atom, implicit_partners.h) have their slots filled through the caller's
-// exchange, on the host, once per application of G (none on one rank).
+// exchange once per application of G (none on one rank): the values sent are packed in a
+// kernel, and only they and the slots' values pass through the host.
 #ifndef ETD_FRICTION_OPERATOR_KOKKOS_H
 #define ETD_FRICTION_OPERATOR_KOKKOS_H
 
@@ -33,8 +34,16 @@ template <class DeviceType> class FrictionOperatorKokkos {
   using Values = kk::Values<DeviceType>;
   using Indices = kk::Indices<DeviceType>;
   using Geometry = kk::Geometry<DeviceType>;
-  // fills the slots [3 nowned, 3 npartners) of a host array of partner values from their owners
-  using Exchange = std::function<void(double *)>;
+  // How a partner vector's slots [3 nowned, 3 npartners) are filled from their owners
+  // (PartnerExchange::swap): the owned atoms whose values other ranks need, in order, and
+  // swap(their values, the slots' values), 3 values an atom, host arrays, collective among the
+  // partners. Only these values cross between DeviceType's memory and the host; a rank with
+  // nothing sent and no slots (one rank) skips it.
+  struct Exchange {
+    const int *sent = nullptr;
+    int nsent = 0;
+    std::function<void(const double *, double *)> swap;
+  };
   using PairSums = PairSumsKokkos<DeviceType>;
   using Shares = typename PairSums::Shares;
   using Incidence = FrictionIncidenceKokkos<DeviceType>;
@@ -261,6 +270,38 @@ template <class DeviceType> class FrictionOperatorKokkos {
         });
   }
 
+  // the exchange of the solve to come: its list of atoms sent into DeviceType's memory
+  void set_exchange(const Exchange &exchange)
+  {
+    exchange_ = &exchange;
+    kk::upload(sent_, exchange.sent, exchange.nsent);
+  }
+
+  // A partner vector's slots from their owners: the values sent packed in a kernel, then
+  // through the host (the exchange is collective: every rank with values to send or slots to
+  // fill takes part)
+  void fill_slots(const Values &vector)
+  {
+    const int nsent = exchange_->nsent, nslots = npartners_ - nowned_;
+    if (nsent == 0 && nslots == 0) return;
+    kk::grow(sent_values_, 3 * nsent);
+    auto sent = sent_;
+    auto packed = sent_values_;
+    auto given = vector;
+    Kokkos::parallel_for(
+        "etd:pack_sent", Kokkos::RangePolicy<execution_space>(0, nsent), KOKKOS_LAMBDA(const int q) {
+          for (int k = 0; k < 3; k++) packed(3 * q + k) = given(3 * sent(q) + k);
+        });
+    sent_host_.resize(3 * nsent);
+    slots_host_.resize(3 * nslots);
+    kk::download(sent_values_, sent_host_.data(), 3 * nsent);
+    exchange_->swap(sent_host_.data(), slots_host_.data());
+    Kokkos::View<const double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>>
+        slots(slots_host_.data(), 3 * nslots);
+    Kokkos::deep_copy(Kokkos::subview(vector, Kokkos::make_pair(3 * nowned_, 3 * npartners_)),
+                      slots);
+  }
+
  protected:
   int nowned_ = 0, npartners_ = 0;
   // G applied by pairs (the host's threads: sums_) or by atoms (a device: incidence_)
@@ -273,20 +314,13 @@ template <class DeviceType> class FrictionOperatorKokkos {
   // A's weights, and the exchange that fills a partner vector's slots (the solve's)
   double mass_weight_ = 1.0, friction_weight_ = 0.0;
   const Exchange *exchange_ = nullptr;
+  Indices sent_;                                 // the exchange's atoms sent
+  Values sent_values_;                           // their values, packed
+  std::vector<double> sent_host_, slots_host_;   // those and the slots' values on the host
   // shared with the solve, over the owned atoms (x_ over the partners): for the right-hand
   // sides b_ holds v, then b; x_ holds u and w_ G u; in the solve x_ is the solution and w_ A z
   Values inertia_, b_, x_, w_;
   Values kick_, image_;    // pair_terms(): the impulse, the images' friction
-
-  // a partner vector's slots from their owners (through the host); every rank calls it, with
-  // slots or without, since the exchange is collective
-  void fill_slots(Values &vector) const
-  {
-    auto host = Kokkos::create_mirror_view(vector);
-    Kokkos::deep_copy(host, vector);
-    (*exchange_)(host.data());
-    Kokkos::deep_copy(vector, host);
-  }
 };
 
 }    // namespace etd

@@ -46,7 +46,7 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
     const int n = 3 * nowned_;
     mass_weight_ = mass_weight;
     friction_weight_ = friction_weight;
-    exchange_ = &exchange;
+    set_exchange(exchange);
     global_sum_ = &global_sum;
     kk::upload(inertia_, inertia, n);
     kk::upload(b_, b, n);
@@ -410,12 +410,12 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
   using Operator::geometry_;
   using Operator::mass_weight_;
   using Operator::friction_weight_;
-  using Operator::exchange_;
   using Operator::inertia_;
   using Operator::b_;
   using Operator::x_;
   using Operator::w_;
   using Operator::fill_slots;
+  using Operator::set_exchange;
 
   const GlobalSum *global_sum_ = nullptr;
   bool deflate_ = false;

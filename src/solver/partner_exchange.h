@@ -10,7 +10,9 @@
 //
 // A rank lists what it needs as "slots", (owner rank, owner's local index), grouped by owner;
 // set_requests() tells every owner what to send (collective over the communicator), and
-// exchange() then fills the slots of a per-atom vector from the owners' values.
+// exchange() then fills the slots of a per-atom vector from the owners' values. swap() is the
+// same exchange for a caller that packs the values sent and unpacks the slots itself (the
+// Kokkos solve, whose vectors may live in a GPU's memory: only these cross to the host).
 #ifndef ETD_PARTNER_EXCHANGE_H
 #define ETD_PARTNER_EXCHANGE_H
 
@@ -48,12 +50,13 @@ class PartnerExchange {
           if (earlier.rank == owner_rank[s])
             throw std::invalid_argument(
                 "PartnerExchange: the slots of one owner must be consecutive");
-        sources_.push_back({owner_rank[s], static_cast<int>(s), 0, {}});
+        sources_.push_back({owner_rank[s], static_cast<int>(s), 0});
       }
       sources_.back().count++;
     }
     slots_ = static_cast<int>(owner_rank.size());
     targets_.clear();
+    sent_.clear();
     if (nprocs_ == 1) return;
 
     // how many ranks will ask this one (each rank flags the owners it asks)
@@ -62,65 +65,70 @@ class PartnerExchange {
     int askers = 0;
     MPI_Reduce_scatter_block(asks.data(), &askers, 1, MPI_INT, MPI_SUM, comm_);
 
-    std::vector<MPI_Request> sent(sources_.size());
+    std::vector<MPI_Request> asked(sources_.size());
     for (size_t k = 0; k < sources_.size(); k++)
       MPI_Isend(owner_index.data() + sources_[k].first, sources_[k].count, MPI_INT,
-                sources_[k].rank, request_tag, comm_, &sent[k]);
+                sources_[k].rank, request_tag, comm_, &asked[k]);
     targets_.resize(askers);
     for (Partner &t : targets_) {
       MPI_Status status;
       MPI_Probe(MPI_ANY_SOURCE, request_tag, comm_, &status);
       MPI_Get_count(&status, MPI_INT, &t.count);
       t.rank = status.MPI_SOURCE;
-      t.indices.resize(t.count);
-      MPI_Recv(t.indices.data(), t.count, MPI_INT, t.rank, request_tag, comm_, MPI_STATUS_IGNORE);
+      t.first = static_cast<int>(sent_.size());
+      sent_.resize(sent_.size() + t.count);
+      MPI_Recv(sent_.data() + t.first, t.count, MPI_INT, t.rank, request_tag, comm_,
+               MPI_STATUS_IGNORE);
     }
-    MPI_Waitall(static_cast<int>(sent.size()), sent.data(), MPI_STATUSES_IGNORE);
+    MPI_Waitall(static_cast<int>(asked.size()), asked.data(), MPI_STATUSES_IGNORE);
   }
 
   // values[width * (offset + s) + k] = the owner's values[width * index + k] for every slot s
   // (values must hold offset + slots() atoms). Collective among the partners.
   void exchange(double *values, int offset, int width)
   {
-    if (sources_.empty() && targets_.empty()) return;
+    if (idle()) return;
+    send_buffer_.resize(static_cast<size_t>(width) * sent_.size());
+    double *buffer = send_buffer_.data();
+    for (int index : sent_)
+      for (int k = 0; k < width; k++) *buffer++ = values[static_cast<size_t>(width) * index + k];
+    swap(send_buffer_.data(), values + static_cast<size_t>(width) * offset, width);
+  }
+
+  // The exchange with the values packed by the caller: sent_values holds width values for each
+  // atom of sent(), in that order; slot_values receives width values for each slot. Collective
+  // among the partners.
+  void swap(const double *sent_values, double *slot_values, int width)
+  {
+    if (idle()) return;
     requests_.resize(sources_.size() + targets_.size());
     size_t n = 0;
     for (const Partner &p : sources_)
-      MPI_Irecv(values + static_cast<size_t>(width) * (offset + p.first), width * p.count,
-                MPI_DOUBLE, p.rank, values_tag, comm_, &requests_[n++]);
-    size_t total = 0;
-    for (const Partner &t : targets_) total += t.indices.size();
-    send_buffer_.resize(width * total);
-    double *buffer = send_buffer_.data();
-    for (const Partner &t : targets_) {
-      double *start = buffer;
-      for (int index : t.indices)
-        for (int k = 0; k < width; k++) *buffer++ = values[static_cast<size_t>(width) * index + k];
-      MPI_Isend(start, width * t.count, MPI_DOUBLE, t.rank, values_tag, comm_, &requests_[n++]);
-    }
+      MPI_Irecv(slot_values + static_cast<size_t>(width) * p.first, width * p.count, MPI_DOUBLE,
+                p.rank, values_tag, comm_, &requests_[n++]);
+    for (const Partner &t : targets_)
+      MPI_Isend(sent_values + static_cast<size_t>(width) * t.first, width * t.count, MPI_DOUBLE,
+                t.rank, values_tag, comm_, &requests_[n++]);
     MPI_Waitall(static_cast<int>(n), requests_.data(), MPI_STATUSES_IGNORE);
   }
 
+  // this rank neither sends nor receives (one rank; a subdomain whose pairs stay inside it)
+  bool idle() const { return sources_.empty() && targets_.empty(); }
   int slots() const { return slots_; }
-  // atoms this rank sends in one exchange
-  int sent_atoms() const
-  {
-    int total = 0;
-    for (const Partner &t : targets_) total += t.count;
-    return total;
-  }
+  // the owned atoms this rank sends in one exchange, in the order swap() takes their values
+  const std::vector<int> &sent() const { return sent_; }
 
  private:
   static constexpr int request_tag = 1, values_tag = 2;
   struct Partner {
     int rank;
-    int first;    // sources: first slot
+    int first;    // sources: its first slot; targets: its first entry of sent_
     int count;
-    std::vector<int> indices;    // targets: the owned atoms it asked for
   };
   MPI_Comm comm_;
   int me_ = 0, nprocs_ = 1, slots_ = 0;
   std::vector<Partner> sources_, targets_;
+  std::vector<int> sent_;    // the owned atoms each target asked for, one target after another
   std::vector<MPI_Request> requests_;
   std::vector<double> send_buffer_;
 };
