@@ -111,27 +111,41 @@ class CellPairSearch {
   }
 
   // Cells no smaller than the cutoff over the atoms' bounding box, so that a pair lies in one
-  // cell or two neighbouring ones; atoms and their positions sorted by cell (a counting sort, in
-  // ranges of atoms at once with a runner: each range counts its atoms per cell and places them
-  // after the lower ranges' atoms of the same cell, so every cell lists its atoms in index order
-  // whatever the ranges). A box stretched by a far-away atom gets coarser cells rather than
-  // more cells than atoms.
+  // cell or two neighbouring ones; atoms and their positions sorted by cell (sort_by_cell()).
   void bin(const double *x, int nall, double cutoff, int chunks, const ChunkRunner &runner)
   {
     const ParallelRanges split{std::min(chunks, max_bin_ranges), runner};
+    double lo[3], hi[3], inverse[3];
+    bounding_box(x, nall, split, lo, hi);
+    make_cells(lo, hi, cutoff, nall, inverse);
+    sort_by_cell(x, nall, split, lo, inverse);
+    // the owned atoms in the cells before each (owned atoms come first in a cell: index order)
+    const int ncells = n_[0] * n_[1] * n_[2];
+    owned_before_.resize(ncells + 1);
+    owned_before_[0] = 0;
+    for (int c = 0; c < ncells; c++) {
+      int owned = start_[c];
+      while (owned < start_[c + 1] && sorted_[owned] < nlocal_) owned++;
+      owned_before_[c + 1] = owned_before_[c] + (owned - start_[c]);
+    }
+  }
+
+  // the atoms' bounding box, each range's first and then theirs combined
+  void bounding_box(const double *x, int nall, const ParallelRanges &split, double lo[3],
+                    double hi[3])
+  {
     const int ranges = split.ranges(nall);
     std::vector<double> &bounds = bounds_;    // per range: lo[3], hi[3]
     bounds.assign(6 * ranges, 0.0);
     split.for_ranges(nall, [&](int first, int last, int r) {
-      double *lo = &bounds[6 * r], *hi = lo + 3;
-      for (int k = 0; k < 3; k++) lo[k] = hi[k] = x[3 * first + k];
+      double *range_lo = &bounds[6 * r], *range_hi = range_lo + 3;
+      for (int k = 0; k < 3; k++) range_lo[k] = range_hi[k] = x[3 * first + k];
       for (int j = first + 1; j < last; j++)
         for (int k = 0; k < 3; k++) {
-          lo[k] = std::min(lo[k], x[3 * j + k]);
-          hi[k] = std::max(hi[k], x[3 * j + k]);
+          range_lo[k] = std::min(range_lo[k], x[3 * j + k]);
+          range_hi[k] = std::max(range_hi[k], x[3 * j + k]);
         }
     });
-    double lo[3], hi[3];
     for (int k = 0; k < 3; k++) {
       lo[k] = bounds[k];
       hi[k] = bounds[3 + k];
@@ -140,6 +154,13 @@ class CellPairSearch {
         hi[k] = std::max(hi[k], bounds[6 * r + 3 + k]);
       }
     }
+  }
+
+  // n_ cells along each axis, no smaller than the cutoff, and inverse: cells per unit length. A
+  // box stretched by a far-away atom gets coarser cells rather than more cells than atoms.
+  void make_cells(const double lo[3], const double hi[3], double cutoff, int nall,
+                  double inverse[3])
+  {
     double size = cutoff > 0.0 ? cutoff : 1.0;
     const double cell_budget = 2.0 * nall + 27.0;
     for (;;) {
@@ -148,11 +169,20 @@ class CellPairSearch {
       if (cells <= cell_budget) break;
       size *= 1.26;
     }
-    double inverse[3];
     for (int k = 0; k < 3; k++) {
       n_[k] = std::max(1, static_cast<int>(std::floor((hi[k] - lo[k]) / size)));
       inverse[k] = hi[k] > lo[k] ? n_[k] / (hi[k] - lo[k]) : 0.0;
     }
+  }
+
+  // The atoms and their positions sorted by cell: a counting sort in ranges of atoms at once
+  // (with a runner), each range counting its atoms per cell and placing them after the lower
+  // ranges' atoms of the same cell, so that every cell lists its atoms in index order whatever
+  // the ranges
+  void sort_by_cell(const double *x, int nall, const ParallelRanges &split, const double lo[3],
+                    const double inverse[3])
+  {
+    const int ranges = split.ranges(nall);
     const int ncells = n_[0] * n_[1] * n_[2];
     cell_of_.resize(nall);
     // per range and cell: its atoms there, then where the first of them goes
@@ -190,14 +220,6 @@ class CellPairSearch {
         for (int k = 0; k < 3; k++) sorted_x_[3 * s + k] = x[3 * j + k];
       }
     });
-    // the owned atoms in the cells before each (owned atoms come first in a cell: index order)
-    owned_before_.resize(ncells + 1);
-    owned_before_[0] = 0;
-    for (int c = 0; c < ncells; c++) {
-      int owned = start_[c];
-      while (owned < start_[c + 1] && sorted_[owned] < nlocal_) owned++;
-      owned_before_[c + 1] = owned_before_[c] + (owned - start_[c]);
-    }
   }
 
   // The pairs one slab of cells found: `found` of them, as atom indices, oriented (both
