@@ -19,7 +19,9 @@ plugin="$build/etddpdplugin.so"
 [ -f "$plugin" ] || { echo "no KOKKOS plugin at $plugin: run tools/kokkos/test.sh first" >&2; exit 1; }
 lmp="$prefix/bin/lmp"
 mpi=(mpirun --oversubscribe); [ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root)
-export OMP_PROC_BIND=false
+# threads bound one to a place, spread over them: LAMMPS's advice for KOKKOS with OpenMP
+# (its manual, Speed_kokkos); every run records it
+export OMP_PROC_BIND=spread OMP_PLACES=threads
 # name | ranks | threads (0: no Kokkos) | pair style | integrator (nve; etd: fix etd diagonal;
 # implicit: fix etd scheme implicit, and shardlow: LAMMPS's fix shardlow with dpd/fdt/energy, each
 # at its largest step within tolerance for GW m = 0.01 in the accuracy matrix: 0.005 and 0.004)
@@ -70,14 +72,16 @@ for round in $(seq "$first_round" $((first_round + rounds - 1))); do
     [ "$threads" -gt 1 ] && bind=(--bind-to none)
     sharing=null
     [ "$threads" -gt 1 ] &&
-      sharing=$("$work/sharing_probe" | awk '/split differently +2 thread/{print $5}')
+      sharing=$(env -u OMP_PLACES OMP_PROC_BIND=false "$work/sharing_probe" |
+                awk '/split differently +2 thread/{print $5}')
     "${mpi[@]}" "${bind[@]}" -np "$ranks" "$lmp" "${args[@]}"
     loop=$(awk '/^BENCH/{b=1} b&&/^Loop time/{print $4; exit}' "$work/log")
     # (the pair style's list: perpetual, or occasional where fix etd's own search feeds it)
     style=$(awk '/^BENCH/{b=1} /pair [a-z\/]+, (perpetual|occasional)/{s=$3} END{print s}' "$work/log")
     lammps=$(sed -n '1s/^LAMMPS (\(.*\))$/\1/p' "$work/log")
-    printf '{"sitting": %d, "round": %d, "setup": "%s", "pair_style": "%s", "integrator": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "dt": %s, "loop_s": %s, "lammps": "%s", "cores": %d, "sharing_ms": %s}\n' \
-      "$sitting" "$round" "$name" "${style%,}" "$integrator" "$ranks" "$threads" "$steps" "$dt" "$loop" "$lammps" "$(nproc)" "$sharing" | tee -a "$out"
+    printf '{"sitting": %d, "round": %d, "setup": "%s", "pair_style": "%s", "integrator": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "dt": %s, "loop_s": %s, "lammps": "%s", "cores": %d, "sharing_ms": %s, "omp_proc_bind": "%s", "omp_places": "%s"}\n' \
+      "$sitting" "$round" "$name" "${style%,}" "$integrator" "$ranks" "$threads" "$steps" "$dt" "$loop" "$lammps" "$(nproc)" "$sharing" \
+      "$OMP_PROC_BIND" "$OMP_PLACES" | tee -a "$out"
   done
 done
 /usr/bin/python3 "$here/table.py" "$out" | tee "$here/results/throughput.md"

@@ -23,6 +23,17 @@ LARGE_STEP = ("implicit", "shardlow")
 PEER = "shardlow"
 
 
+def binding(runs):
+    """How the runs' OpenMP threads were placed (OMP_PROC_BIND, OMP_PLACES), in words"""
+    kinds = {(r.get("omp_proc_bind", "false"), r.get("omp_places", "")) for r in runs}
+    if len(kinds) > 1:
+        return "threads placed in several ways"
+    bind, places = kinds.pop()
+    if bind == "false":
+        return "threads unbound (OMP_PROC_BIND=false)"
+    return f"threads bound (OMP_PROC_BIND={bind}, OMP_PLACES={places})"
+
+
 def baseline(runs, integrator):
     """The set-up on 2 MPI ranks without Kokkos with this integrator (dpd/gen where there are
     several)."""
@@ -42,7 +53,8 @@ def main(path):
     print(f"{first['atoms']:,} atoms of the standard fluid, {first['steps']} steps per run, "
           f"{len(rounds)} alternated rounds in {len({r.get('sitting', 1) for r in runs})} sitting(s) "
           f"(bench/kokkos/run.sh), LAMMPS {first.get('lammps', '?')} with "
-          f"KOKKOS (OpenMP backend) on {first.get('cores', '?')} cores. fix nve: m = 1, dt = 0.01; "
+          f"KOKKOS (OpenMP backend) on {first.get('cores', '?')} cores, {binding(runs)}. "
+          "fix nve: m = 1, dt = 0.01; "
           "fix etd scheme diagonal: m = 0.01, dt = 0.002; fix etd scheme implicit: m = 0.01, dt = 0.005; "
           "fix shardlow (pair dpd/fdt/energy): m = 0.01, dt = 0.004. "
           "Ratio: to the CPU styles on 2 MPI ranks with the "
