@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include "atom.h"
 #include "atom_masks.h"
+#include "domain.h"
 #include "fix.h"
 #include "force.h"
 #include "lammps.h"
@@ -451,6 +453,58 @@ TEST(KokkosStyles, RestartContinuesTheRun)
     }
     EXPECT_LT(max_rel_diff(resumed, straight), c.tolerance) << c.fix;
   }
+}
+
+// Of the pairs within the cutoff among this rank's atoms, the fraction whose two atoms lie in
+// different halves of the atoms' index order (the threads' shares of the kernels)
+double pairs_across_index_halves(Lammps &l)
+{
+  const int nlocal = l.lmp->atom->nlocal;
+  double **x = l.lmp->atom->x;
+  const double *lo = l.lmp->domain->boxlo, *hi = l.lmp->domain->boxhi;
+  long pairs = 0, across = 0;
+  for (int i = 0; i < nlocal; i++)
+    for (int j = i + 1; j < nlocal; j++) {
+      double rsq = 0.0;
+      for (int k = 0; k < 3; k++) {
+        const double side = hi[k] - lo[k];
+        double d = x[i][k] - x[j][k];
+        d -= side * std::round(d / side);
+        rsq += d * d;
+      }
+      if (rsq >= 1.0) continue;
+      pairs++;
+      if ((i < nlocal / 2) != (j < nlocal / 2)) across++;
+    }
+  return pairs > 0 ? double(across) / double(pairs) : 0.0;
+}
+
+// While the implicit scheme's kernels run, LAMMPS sorts the atoms at a reneighboring at least
+// every 20 steps (atom_modify sort is every 1000 by default): at this mass and step the atoms
+// otherwise leave the sorted order within tens of steps (as under the CPU fix, which LAMMPS
+// sorts at the run's start only), and the threads' halves of the atoms then share many pairs.
+// With atom_modify sort 0 the fix sorts nothing (the data file's random order stays).
+TEST(KokkosStyles, ImplicitKernelsKeepTheAtomsSorted)
+{
+  struct Case {
+    bool kokkos;
+    const char *sort;
+  };
+  std::vector<double> across;
+  for (const Case &c : {Case{true, "1000"}, Case{false, "1000"}, Case{true, "0"}}) {
+    Lammps l(MPI_COMM_WORLD, true, c.kokkos ? kokkos_args() : std::vector<std::string>{});
+    setup_box(l, 0.01, 0.005);
+    l.cmds(GEN_S2);
+    l.cmds({std::string("atom_modify sort ") + c.sort + " 0.0",
+            "fix integrate all etd scheme implicit", "run 100 post no"});
+    EXPECT_EQ(kernel_solves(l) > 0.0, c.kokkos);
+    across.push_back(pairs_across_index_halves(l));
+  }
+  EXPECT_LT(across[0], 0.2);
+  EXPECT_GT(across[1], 1.5 * across[0]) << "the CPU fix";
+  EXPECT_GT(across[2], 1.5 * across[0]) << "atom_modify sort 0";
+  std::printf("pairs across the index halves: %.3f (kk), %.3f (CPU), %.3f (kk, sort 0)\n", across[0],
+              across[1], across[2]);
 }
 
 // The zero-mass limit runs in the kernels: both assemblies and solves of a step (predictor and

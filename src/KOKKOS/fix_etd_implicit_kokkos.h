@@ -28,8 +28,10 @@ template <class DeviceType> class FixETDImplicitKokkos : public FixETDImplicit {
   // "kernel_solves", "kernel_assemblies" (dim 0, a double): how many solves, and pair
   // assemblies with their right-hand sides, of this run ran in the kernels
   void *extract(const char *name, int &dim) override;
+  int setmask() override;
   void init() override;
   void setup(int vflag) override;
+  void pre_exchange() override;
 
  protected:
   bool assemble_pairs(const etd::FrictionPairAssembly::Context &context) override;
@@ -54,6 +56,10 @@ template <class DeviceType> class FixETDImplicitKokkos : public FixETDImplicit {
   bool terms_in_kernels() const { return pairs_on_device && !pairs_on_host; }
   std::vector<double> zero_u, unused, image_friction;    // fixed_friction()'s and its scratch
   double kernel_solves = 0.0, kernel_assemblies = 0.0;
+  // LAMMPS sorts the atoms (atom_modify sort) at a reneighboring at least this often while the
+  // kernels run (pre_exchange())
+  static constexpr int sort_every = 20;
+  LAMMPS_NS::bigint last_sort = 0;
   bool assembles_in_kernels() const;
 };
 
