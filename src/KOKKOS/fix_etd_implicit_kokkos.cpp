@@ -70,9 +70,8 @@ template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::setup(int vfl
 
 // The kernels split the atoms among the threads by index, and LAMMPS's sort keeps atoms that
 // are close in space close in index. At this scheme's steps the atoms leave that order within
-// tens of steps (GW m = 0.01, dt = 0.005: a tenth of the pairs join atoms of the two halves
-// 50 steps after a sort, a third after 800), and the threads then read and write each
-// other's data in every product of the solve. So at a reneighboring at least sort_every steps
+// tens of steps (measured in bench/kokkos/README.md, "The atoms kept sorted"), and the threads
+// then read and write each other's data in every product of the solve. So at a reneighboring at least sort_every steps
 // after the last sort, LAMMPS sorts again (its own sort and bins); with atom_modify sort 0,
 // never.
 template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::pre_exchange()
