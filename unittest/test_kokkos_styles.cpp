@@ -479,32 +479,43 @@ double pairs_across_index_halves(Lammps &l)
   return pairs > 0 ? double(across) / double(pairs) : 0.0;
 }
 
-// While the implicit scheme's kernels run, LAMMPS sorts the atoms at a reneighboring at least
-// every 20 steps (atom_modify sort is every 1000 by default): at this mass and step the atoms
-// otherwise leave the sorted order within tens of steps (as under the CPU fix, which LAMMPS
-// sorts at the run's start only), and the threads' halves of the atoms then share many pairs.
-// With atom_modify sort 0 the fix sorts nothing (the data file's random order stays).
-TEST(KokkosStyles, ImplicitKernelsKeepTheAtomsSorted)
+// While fix etd/kk's kernels run (the implicit scheme's, and the diagonal scheme's with the pair
+// style's kernel), LAMMPS sorts the atoms at a reneighboring at least every 20 steps
+// (atom_modify sort is every 1000 by default): at these masses and steps the atoms otherwise
+// leave the sorted order within tens of steps (as under the CPU fix, which LAMMPS sorts at the
+// run's start only), and the threads' halves of the atoms then share many pairs. With
+// atom_modify sort 0 the fix sorts nothing (the data file's random order stays).
+TEST(KokkosStyles, KernelsKeepTheAtomsSorted)
 {
+  struct Scheme {
+    const char *fix;
+    double dt;
+    int steps;
+  };
   struct Case {
     bool kokkos;
     const char *sort;
   };
-  std::vector<double> across;
-  for (const Case &c : {Case{true, "1000"}, Case{false, "1000"}, Case{true, "0"}}) {
-    Lammps l(MPI_COMM_WORLD, true, c.kokkos ? kokkos_args() : std::vector<std::string>{});
-    setup_box(l, 0.01, 0.005);
-    l.cmds(GEN_S2);
-    l.cmds({std::string("atom_modify sort ") + c.sort + " 0.0",
-            "fix integrate all etd scheme implicit", "run 100 post no"});
-    EXPECT_EQ(kernel_solves(l) > 0.0, c.kokkos);
-    across.push_back(pairs_across_index_halves(l));
+  for (const Scheme &scheme : {Scheme{"etd scheme implicit", 0.005, 100},
+                               Scheme{"etd scheme diagonal", 0.002, 250}}) {
+    std::vector<double> across;
+    for (const Case &c : {Case{true, "1000"}, Case{false, "1000"}, Case{true, "0"}}) {
+      Lammps l(MPI_COMM_WORLD, true, c.kokkos ? kokkos_args() : std::vector<std::string>{});
+      setup_box(l, 0.01, scheme.dt);
+      l.cmds(GEN_S2);
+      l.cmds({std::string("atom_modify sort ") + c.sort + " 0.0",
+              std::string("fix integrate all ") + scheme.fix,
+              "run " + std::to_string(scheme.steps) + " post no"});
+      if (std::string(scheme.fix).find("implicit") != std::string::npos)
+        EXPECT_EQ(kernel_solves(l) > 0.0, c.kokkos);
+      across.push_back(pairs_across_index_halves(l));
+    }
+    EXPECT_LT(across[0], 0.2) << scheme.fix;
+    EXPECT_GT(across[1], 1.5 * across[0]) << scheme.fix << ": the CPU fix";
+    EXPECT_GT(across[2], 1.5 * across[0]) << scheme.fix << ": atom_modify sort 0";
+    std::printf("%s: pairs across the index halves: %.3f (kk), %.3f (CPU), %.3f (kk, sort 0)\n",
+                scheme.fix, across[0], across[1], across[2]);
   }
-  EXPECT_LT(across[0], 0.2);
-  EXPECT_GT(across[1], 1.5 * across[0]) << "the CPU fix";
-  EXPECT_GT(across[2], 1.5 * across[0]) << "atom_modify sort 0";
-  std::printf("pairs across the index halves: %.3f (kk), %.3f (CPU), %.3f (kk, sort 0)\n", across[0],
-              across[1], across[2]);
 }
 
 // The zero-mass limit runs in the kernels: both assemblies and solves of a step (predictor and

@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
-# Builds of the plugin side by side on the implicit-scheme set-ups of run.sh (in.kokkos_throughput,
-# GW m = 0.01, dt = 0.005, 24,000 atoms): for each variant, fix etd/kk on 1 rank with 2 threads,
-# and fix etd on 2 ranks, alternated round after round so that the machine's slow spells fall on
-# all of them alike. Prints every run and, per variant and set-up, the median and the range, and
-# each round's ratio (2 ranks / 2 threads of the same variant).
+# Builds of the plugin side by side on the fix etd set-ups of run.sh (in.kokkos_throughput,
+# GW m = 0.01, 24,000 atoms; scheme implicit at dt = 0.005 by default): for each variant, fix
+# etd/kk on 1 rank with 2 threads, and fix etd on 2 ranks, alternated round after round so that
+# the machine's slow spells fall on all of them alike. Prints every run and, per variant and
+# set-up, the median and the range, and each round's ratio (2 ranks / 2 threads of the same
+# variant).
 #   KOKKOS_SOURCE=... ETD_DPD_LAMMPS=trixie bash bench/kokkos/alternate.sh ROUNDS STEPS A.so B.so ...
+# Environment:
+#   ETD_DPD_BENCH_SCHEME  implicit (default; dt 0.005) or diagonal (dt 0.002, run.sh's)
+#   ETD_DPD_BENCH_BIND=1  the threads bound as run.sh binds them (OMP_PROC_BIND=spread,
+#                         OMP_PLACES=threads); default unbound, as the sittings before 2026-11-28
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -17,7 +22,16 @@ shift 2
 prefix=$(bash "$root/tools/kokkos/build_lammps_kokkos.sh" | sed -n 's/^LAMMPS_KOKKOS_PREFIX=//p')
 lmp="$prefix/bin/lmp"
 mpi=(mpirun --oversubscribe); [ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root)
-export OMP_PROC_BIND=false
+case "${ETD_DPD_BENCH_SCHEME:-implicit}" in
+  implicit) scheme=(-var integrator implicit -var dt 0.005) ;;
+  diagonal) scheme=(-var integrator etd -var dt 0.002) ;;
+  *) echo "ETD_DPD_BENCH_SCHEME=$ETD_DPD_BENCH_SCHEME: implicit or diagonal" >&2; exit 2 ;;
+esac
+if [ "${ETD_DPD_BENCH_BIND:-0}" = 1 ]; then
+  export OMP_PROC_BIND=spread OMP_PLACES=threads
+else
+  export OMP_PROC_BIND=false
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 loop_time() { awk '/^BENCH/{b=1} b&&/^Loop time/{print $4; exit}' "$work/log"; }
@@ -25,7 +39,7 @@ for round in $(seq "$rounds"); do
   for plugin in "$@"; do
     plugin=$(cd "$(dirname "$plugin")" && pwd)/$(basename "$plugin")
     args=(-in "$here/in.kokkos_throughput" -var plugin "$plugin" -var pair dpd/gen -var steps "$steps"
-          -var integrator implicit -var dt 0.005 -log "$work/log" -screen none)
+          "${scheme[@]}" -log "$work/log" -screen none)
     "${mpi[@]}" --bind-to none -np 1 "$lmp" "${args[@]}" -k on t 2 -sf kk
     threads=$(loop_time)
     "${mpi[@]}" -np 2 "$lmp" "${args[@]}"

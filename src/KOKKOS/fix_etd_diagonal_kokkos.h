@@ -7,6 +7,7 @@
 #ifndef ETD_FIX_ETD_DIAGONAL_KOKKOS_H
 #define ETD_FIX_ETD_DIAGONAL_KOKKOS_H
 
+#include "atom_sort_schedule.h"
 #include "fix_etd_diagonal.h"
 
 #include "kokkos_type.h"
@@ -20,7 +21,10 @@ template <class DeviceType> class FixETDDiagonalKokkos : public FixETDDiagonal {
   using AT = ArrayTypes<DeviceType>;
 
   FixETDDiagonalKokkos(class LAMMPS *, int, char **);
+  int setmask() override;
   void init() override;
+  void setup(int vflag) override;
+  void pre_exchange() override;
   void initial_integrate(int) override;
   void final_integrate() override;
 
@@ -31,6 +35,7 @@ template <class DeviceType> class FixETDDiagonalKokkos : public FixETDDiagonal {
   // the pair style's friction diagonal where DeviceType reads it
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> friction_on_device(int nlocal);
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> d_friction_copy;
+  etd::kk::AtomSortSchedule sorting;    // while the kernels run (pre_exchange())
 };
 
 // Registers fix etd/kk, etd/kk/device and etd/kk/host with LAMMPS.

@@ -65,21 +65,13 @@ template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::setup(int vfl
     pairs_kk.set_coefficients(table, ntypes1, assembly.noise());
   }
   FixETDImplicit::setup(vflag);
-  last_sort = update->ntimestep;    // (the run's setup sorted the atoms)
+  sorting.run_started(update->ntimestep);
 }
 
-// The kernels split the atoms among the threads by index, and LAMMPS's sort keeps atoms that
-// are close in space close in index. At this scheme's steps the atoms leave that order within
-// tens of steps (measured in bench/kokkos/README.md, "The atoms kept sorted"), and the threads
-// then read and write each other's data in every product of the solve. So at a reneighboring at least sort_every steps
-// after the last sort, LAMMPS sorts again (its own sort and bins); with atom_modify sort 0,
-// never.
+// LAMMPS sorts the atoms often while the kernels run (atom_sort_schedule.h)
 template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::pre_exchange()
 {
-  if (!assembles_in_kernels() || atom->sortfreq <= sort_every) return;
-  if (update->ntimestep - last_sort < sort_every) return;
-  atom->nextsort = update->ntimestep;
-  last_sort = update->ntimestep;
+  if (assembles_in_kernels()) sorting.before_exchange(atom, update->ntimestep);
 }
 
 // the kernels assemble dpd/gen-type pairs (translation), for the inertial step and the overdamped

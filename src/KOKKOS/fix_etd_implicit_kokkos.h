@@ -14,6 +14,7 @@
 #ifndef ETD_FIX_ETD_IMPLICIT_KOKKOS_H
 #define ETD_FIX_ETD_IMPLICIT_KOKKOS_H
 
+#include "atom_sort_schedule.h"
 #include "fix_etd_implicit.h"
 #include "friction_pairs_kokkos.h"
 #include "friction_solve_kokkos.h"
@@ -56,10 +57,7 @@ template <class DeviceType> class FixETDImplicitKokkos : public FixETDImplicit {
   bool terms_in_kernels() const { return pairs_on_device && !pairs_on_host; }
   std::vector<double> zero_u, unused, image_friction;    // fixed_friction()'s and its scratch
   double kernel_solves = 0.0, kernel_assemblies = 0.0;
-  // LAMMPS sorts the atoms (atom_modify sort) at a reneighboring at least this often while the
-  // kernels run (pre_exchange())
-  static constexpr int sort_every = 20;
-  LAMMPS_NS::bigint last_sort = 0;
+  etd::kk::AtomSortSchedule sorting;    // while the kernels run (pre_exchange())
   bool assembles_in_kernels() const;
 };
 
