@@ -6,8 +6,10 @@
 # set-up, the median and the range, and each round's ratio (2 ranks / 2 threads of the same
 # variant).
 #   KOKKOS_SOURCE=... ETD_DPD_LAMMPS=trixie bash bench/kokkos/alternate.sh ROUNDS STEPS A.so B.so ...
+# A variant PLUGIN.so@N runs with atom_modify sort N (the input's variable sort; default 1000).
 # Environment:
-#   ETD_DPD_BENCH_SCHEME  implicit (default; dt 0.005) or diagonal (dt 0.002, run.sh's)
+#   ETD_DPD_BENCH_SCHEME  implicit (default; dt 0.005), diagonal (dt 0.002, run.sh's), or nve
+#                         (dpd/gen/kk and dpd/gen with fix nve, m = 1, dt = 0.01)
 #   ETD_DPD_BENCH_BIND=1  the threads bound as run.sh binds them (OMP_PROC_BIND=spread,
 #                         OMP_PLACES=threads); default unbound, as the sittings before 2026-11-28
 set -euo pipefail
@@ -25,7 +27,8 @@ mpi=(mpirun --oversubscribe); [ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root)
 case "${ETD_DPD_BENCH_SCHEME:-implicit}" in
   implicit) scheme=(-var integrator implicit -var dt 0.005) ;;
   diagonal) scheme=(-var integrator etd -var dt 0.002) ;;
-  *) echo "ETD_DPD_BENCH_SCHEME=$ETD_DPD_BENCH_SCHEME: implicit or diagonal" >&2; exit 2 ;;
+  nve) scheme=(-var integrator nve) ;;
+  *) echo "ETD_DPD_BENCH_SCHEME=$ETD_DPD_BENCH_SCHEME: implicit, diagonal or nve" >&2; exit 2 ;;
 esac
 if [ "${ETD_DPD_BENCH_BIND:-0}" = 1 ]; then
   export OMP_PROC_BIND=spread OMP_PLACES=threads
@@ -35,27 +38,35 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 loop_time() { awk '/^BENCH/{b=1} b&&/^Loop time/{print $4; exit}' "$work/log"; }
+# a variant's name: the plugin's full path, with @N where it sets atom_modify sort
+variant_name() {
+  local plugin=${1%@*} sort=
+  [ "$plugin" = "$1" ] || sort=@${1##*@}
+  echo "$(cd "$(dirname "$plugin")" && pwd)/$(basename "$plugin")$sort"
+}
 for round in $(seq "$rounds"); do
-  for plugin in "$@"; do
-    plugin=$(cd "$(dirname "$plugin")" && pwd)/$(basename "$plugin")
+  for variant in "$@"; do
+    name=$(variant_name "$variant")
+    plugin=${name%@*} sort=1000
+    [ "$plugin" = "$name" ] || sort=${name##*@}
     args=(-in "$here/in.kokkos_throughput" -var plugin "$plugin" -var pair dpd/gen -var steps "$steps"
-          "${scheme[@]}" -log "$work/log" -screen none)
+          -var sort "$sort" "${scheme[@]}" -log "$work/log" -screen none)
     "${mpi[@]}" --bind-to none -np 1 "$lmp" "${args[@]}" -k on t 2 -sf kk
     threads=$(loop_time)
     "${mpi[@]}" -np 2 "$lmp" "${args[@]}"
     ranks=$(loop_time)
-    echo "$round $plugin $threads $ranks" | tee -a "$work/times" |
+    echo "$round $name $threads $ranks" | tee -a "$work/times" |
       awk '{printf "round %d %s: 2 threads %.3f s, 2 ranks %.3f s, ratio %.3f\n", $1, $2, $3, $4, $4 / $3}'
   done
 done
-for plugin in "$@"; do
-  plugin=$(cd "$(dirname "$plugin")" && pwd)/$(basename "$plugin")
-  awk -v v="$plugin" '$2 == v {print $3, $4, $4 / $3}' "$work/times" | /usr/bin/python3 -c '
+for variant in "$@"; do
+  name=$(variant_name "$variant")
+  awk -v v="$name" '$2 == v {print $3, $4, $4 / $3}' "$work/times" | /usr/bin/python3 -c '
 import statistics, sys
 rows = [list(map(float, line.split())) for line in sys.stdin]
 name = sys.argv[1]
 for k, what in enumerate(("2 threads (s)", "2 ranks (s)", "ratio")):
     col = [r[k] for r in rows]
     print(f"{name}: {what}: median {statistics.median(col):.3f}, range {min(col):.3f}-{max(col):.3f} (n = {len(col)})")
-' "$plugin"
+' "$name"
 done
