@@ -6,7 +6,7 @@
 # reused under its real folder. The LAMMPS and Kokkos trees are stubs; nothing is built.
 set -uo pipefail
 unset ETD_DPD_KOKKOS_AS_5 ETD_DPD_KOKKOS_BACKEND ETD_DPD_KOKKOS_ARCH ETD_DPD_LAMMPS LAMMPS_SOURCE \
-  KOKKOS_SOURCE ETD_DPD_KOKKOS_SUITE
+  KOKKOS_SOURCE ETD_DPD_KOKKOS_INSTALLED ETD_DPD_KOKKOS_SUITE
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

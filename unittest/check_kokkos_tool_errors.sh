@@ -2,12 +2,12 @@
 # The KOKKOS tools stop with an ERROR that names the bad argument or setting, before they build
 # or run anything: tools/kokkos/gpu.sh's arguments, and build_lammps_kokkos.sh's backend and
 # its LAMMPS/Kokkos pairing (a LAMMPS that asks for Kokkos 5 against a Kokkos 4.6 source,
-# without ETD_DPD_KOKKOS_AS_5). The LAMMPS and Kokkos trees here are stubs with the files the
+# without ETD_DPD_KOKKOS_AS_5), and an installed Kokkos that is none or serves no such backend. The LAMMPS and Kokkos trees here are stubs with the files the
 # script reads first; no network, no compiler.
 set -uo pipefail
 # the settings a caller may have exported (tools/kokkos/test.sh's own) would change the paths
 unset ETD_DPD_KOKKOS_AS_5 ETD_DPD_KOKKOS_BACKEND ETD_DPD_KOKKOS_ARCH ETD_DPD_LAMMPS LAMMPS_SOURCE \
-  KOKKOS_SOURCE ETD_DPD_KOKKOS_SUITE ETD_DPD_GPU_SOURCES ETD_DPD_THREADS
+  KOKKOS_SOURCE ETD_DPD_KOKKOS_INSTALLED ETD_DPD_KOKKOS_SUITE ETD_DPD_GPU_SOURCES ETD_DPD_THREADS
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -51,6 +51,24 @@ expect_error "build_lammps_kokkos.sh KOKKOS_SOURCE no folder" "KOKKOS_SOURCE=$wo
   env ETD_DPD_CACHE="$work/cache" LAMMPS_SOURCE="$work/lammps" KOKKOS_SOURCE="$work/none" bash "$build"
 expect_error "build_lammps_kokkos.sh LAMMPS_SOURCE no LAMMPS tree" "no LAMMPS source tree .*no src/version.h" \
   env ETD_DPD_CACHE="$work/cache" LAMMPS_SOURCE="$work/kokkos" KOKKOS_SOURCE="$work/kokkos" bash "$build"
+# an installed Kokkos (ETD_DPD_KOKKOS_INSTALLED): a folder with its KokkosConfigVersion.cmake,
+# for the openmp backend
+expect_error "build_lammps_kokkos.sh ETD_DPD_KOKKOS_INSTALLED no folder" \
+  "ETD_DPD_KOKKOS_INSTALLED=$work/none is no folder" \
+  env ETD_DPD_CACHE="$work/cache" LAMMPS_SOURCE="$work/lammps" ETD_DPD_KOKKOS_INSTALLED="$work/none" bash "$build"
+expect_error "build_lammps_kokkos.sh ETD_DPD_KOKKOS_INSTALLED no installed Kokkos" \
+  "has no KokkosConfigVersion.cmake" \
+  env ETD_DPD_CACHE="$work/cache" LAMMPS_SOURCE="$work/lammps" ETD_DPD_KOKKOS_INSTALLED="$work/kokkos" bash "$build"
+mkdir -p "$work/installed"
+printf 'set(PACKAGE_VERSION "5.2.2")\n' >"$work/installed/KokkosConfigVersion.cmake"
+expect_error "build_lammps_kokkos.sh ETD_DPD_KOKKOS_INSTALLED with backend cuda" \
+  "an installed Kokkos serves the openmp backend only" \
+  env ETD_DPD_CACHE="$work/cache" LAMMPS_SOURCE="$work/lammps" ETD_DPD_KOKKOS_INSTALLED="$work/installed" \
+  ETD_DPD_KOKKOS_BACKEND=cuda bash "$build"
+printf 'set(PACKAGE_VERSION "unknown")\n' >"$work/installed/KokkosConfigVersion.cmake"
+expect_error "build_lammps_kokkos.sh ETD_DPD_KOKKOS_INSTALLED without a version" \
+  "no PACKAGE_VERSION in $work/installed/KokkosConfigVersion.cmake" \
+  env ETD_DPD_CACHE="$work/cache" LAMMPS_SOURCE="$work/lammps" ETD_DPD_KOKKOS_INSTALLED="$work/installed" bash "$build"
 [ ! -e "$work/cache" ] || { echo "FAIL: a stopped build left $work/cache behind"; failures=$((failures + 1)); }
 [ "$failures" -eq 0 ] && echo PASS
 exit "$failures"

@@ -510,7 +510,9 @@ TEST(KokkosStyles, KernelsKeepTheAtomsSorted)
         EXPECT_EQ(kernel_solves(l) > 0.0, c.kokkos);
       across.push_back(pairs_across_index_halves(l));
     }
-    EXPECT_LT(across[0], 0.2) << scheme.fix;
+    // (a random order gives about 0.5; kept sorted, 0.14-0.17 under the implicit scheme and
+    // 0.17-0.26 under the diagonal one, on 1 and 2 ranks)
+    EXPECT_LT(across[0], 0.3) << scheme.fix;
     EXPECT_GT(across[1], 1.5 * across[0]) << scheme.fix << ": the CPU fix";
     EXPECT_GT(across[2], 1.5 * across[0]) << scheme.fix << ": atom_modify sort 0";
     std::printf("%s: pairs across the index halves: %.3f (kk), %.3f (CPU), %.3f (kk, sort 0)\n",

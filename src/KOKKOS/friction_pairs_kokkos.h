@@ -366,7 +366,7 @@ template <class DeviceType> class FrictionPairsKokkos {
   // where each listed atom's candidates start (inum + 1), and, where the kernels cannot read
   // LAMMPS's list, the candidates in those compressed rows
   Indices ilist_, list_start_, list_;
-  typename Indices::HostMirror list_start_host_;
+  typename Indices::host_mirror_type list_start_host_;
   Values x_;
   Indices type_, mask_, ghost_partner_;
   Tags tag_;

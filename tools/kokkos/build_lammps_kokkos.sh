@@ -28,6 +28,9 @@
 #   LAMMPS_SOURCE    use this LAMMPS source tree instead
 #   ETD_DPD_KOKKOS_SUITE  Debian suite of the kokkos source package (default sid)
 #   KOKKOS_SOURCE    use this Kokkos source tree (a kokkos release unpacked) instead of Debian's
+#   ETD_DPD_KOKKOS_INSTALLED  build no Kokkos: use the installed one whose KokkosConfig.cmake is
+#                    in this folder (Debian's libkokkos-dev: /usr/lib/<triplet>/cmake/Kokkos;
+#                    its shared libraries are then the single copy); backend openmp only
 #   ETD_DPD_CACHE    cache folder (default ~/.cache/etd-dpd)
 #   ETD_DPD_JOBS     parallel build jobs (default: number of cores)
 #   ETD_DPD_KOKKOS_BACKEND  openmp (default) or cuda
@@ -53,7 +56,17 @@ ksuite=${ETD_DPD_KOKKOS_SUITE:-sid}
 
 # ---- Kokkos source: Debian's kokkos orig tarball, verified ------------------------------
 ksrcdir="$cache/src-$ksuite-kokkos"
-if [ -n "${KOKKOS_SOURCE:-}" ]; then
+kinstalled=
+if [ -n "${ETD_DPD_KOKKOS_INSTALLED:-}" ]; then
+  kinstalled=$(cd "$ETD_DPD_KOKKOS_INSTALLED" 2>/dev/null && pwd) \
+    || die "ETD_DPD_KOKKOS_INSTALLED=$ETD_DPD_KOKKOS_INSTALLED is no folder"
+  [ -f "$kinstalled/KokkosConfigVersion.cmake" ] \
+    || die "ETD_DPD_KOKKOS_INSTALLED=$kinstalled has no KokkosConfigVersion.cmake (an installed Kokkos's cmake/Kokkos folder)"
+  kver=$(sed -n 's/^set(PACKAGE_VERSION "\([0-9.]*\)")/\1/p' "$kinstalled/KokkosConfigVersion.cmake")
+  [ -n "$kver" ] || die "no PACKAGE_VERSION in $kinstalled/KokkosConfigVersion.cmake"
+  [ "${ETD_DPD_KOKKOS_BACKEND:-openmp}" = openmp ] \
+    || die "ETD_DPD_KOKKOS_INSTALLED: an installed Kokkos serves the openmp backend only"
+elif [ -n "${KOKKOS_SOURCE:-}" ]; then
   ksrc=$(cd "$KOKKOS_SOURCE" 2>/dev/null && pwd) || die "KOKKOS_SOURCE=$KOKKOS_SOURCE is no folder"
   kver=
   [ ! -f "$ksrc/CMakeLists.txt" ] \
@@ -66,7 +79,7 @@ elif [ ! -f "$ksrcdir/kokkos/CMakeLists.txt" ]; then
   LAMMPS accepts (its cmake/Modules/Packages/KOKKOS.cmake: find_package(Kokkos VERSION ...)) and
   set KOKKOS_SOURCE to it"
 fi
-if [ -z "${KOKKOS_SOURCE:-}" ]; then ksrc="$ksrcdir/kokkos"; kver=$(cat "$ksrc/.debian-version"); fi
+if [ -z "${KOKKOS_SOURCE:-}" ] && [ -z "$kinstalled" ]; then ksrc="$ksrcdir/kokkos"; kver=$(cat "$ksrc/.debian-version"); fi
 
 # ---- LAMMPS source -----------------------------------------------------------------------
 suite=${ETD_DPD_LAMMPS:-sid}
@@ -146,6 +159,7 @@ patch_digests=()
 for patch_file in "${patches[@]}"; do
   patch_digests+=("$(sha256sum <"$patch_file" | cut -d' ' -f1)")
 done
+[ -z "$kinstalled" ] || kokkos_cmake_options=(installed "$kinstalled")
 confhash=$(printf '%s\n' "${kokkos_cmake_options[@]}" "kokkos-$kver" "${lammps_cmake_options[@]}" "$tag" \
            "${patch_digests[@]}" | sha1sum | cut -c1-10)
 prefix="$cache/$name-$version-$confhash"
@@ -166,7 +180,7 @@ step() {  # NAME LOG COMMAND...
     >>"$prefix/build-times"
 }
 if [ ! -f "$prefix/.complete" ]; then
-  log "building Kokkos $kver (shared) and LAMMPS $version ($tag) with KOKKOS into $prefix"
+  log "building LAMMPS $version ($tag) with KOKKOS against Kokkos $kver (shared; ${kinstalled:-built here}) into $prefix"
   # a build stopped midway (a time limit) resumes: its build folders are incremental
   mkdir -p "$prefix"
   compiler=()
@@ -204,13 +218,18 @@ if [ ! -f "$prefix/.complete" ]; then
   fi
   common=(-D CMAKE_INSTALL_PREFIX="$prefix" -D CMAKE_INSTALL_LIBDIR=lib -D CMAKE_INSTALL_RPATH="$prefix/lib"
           -D CMAKE_EXE_LINKER_FLAGS="$linker_flags" -D CMAKE_SHARED_LINKER_FLAGS="$linker_flags")
-  step "Kokkos configure" "$prefix/kokkos-configure.log" \
-    cmake -S "$ksrc" -B "$prefix/build-kokkos" "${kokkos_cmake_options[@]}" "${common[@]}" "${compiler[@]}"
-  step "Kokkos build" "$prefix/kokkos-build.log" cmake --build "$prefix/build-kokkos" -j "$jobs"
-  step "Kokkos install" "$prefix/kokkos-install.log" cmake --install "$prefix/build-kokkos"
+  kokkos_dir=$prefix/lib/cmake/Kokkos
+  if [ -n "$kinstalled" ]; then
+    kokkos_dir=$kinstalled ksrc=$kinstalled
+  else
+    step "Kokkos configure" "$prefix/kokkos-configure.log" \
+      cmake -S "$ksrc" -B "$prefix/build-kokkos" "${kokkos_cmake_options[@]}" "${common[@]}" "${compiler[@]}"
+    step "Kokkos build" "$prefix/kokkos-build.log" cmake --build "$prefix/build-kokkos" -j "$jobs"
+    step "Kokkos install" "$prefix/kokkos-install.log" cmake --install "$prefix/build-kokkos"
+  fi
   step "LAMMPS configure" "$prefix/configure.log" \
     cmake -S "$src/cmake" -B "$prefix/build" "${lammps_cmake_options[@]}" "${common[@]}" \
-          -D Kokkos_DIR="$prefix/lib/cmake/Kokkos" "${compiler[@]}"
+          -D Kokkos_DIR="$kokkos_dir" "${compiler[@]}"
   step "LAMMPS build" "$prefix/build.log" cmake --build "$prefix/build" -j "$jobs"
   step "LAMMPS install" "$prefix/install.log" cmake --install "$prefix/build"
   printf '%s\n' "$src" >"$prefix/source-dir"
@@ -220,4 +239,6 @@ if [ ! -f "$prefix/.complete" ]; then
 else
   log "reusing the KOKKOS LAMMPS $version at $prefix"
 fi
+# where the package finds the Kokkos that this LAMMPS links, when not in the prefix (test.sh)
+[ -z "$kinstalled" ] || printf '%s\n' "$kinstalled" >"$prefix/kokkos-dir"
 echo "LAMMPS_KOKKOS_PREFIX=$prefix"

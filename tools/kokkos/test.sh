@@ -35,6 +35,8 @@ if [ "$backend" = cuda ]; then
 fi
 build=${ETD_DPD_KOKKOS_BUILD:-$build_default}
 read -r -a extra_cmake <<<"${ETD_DPD_CMAKE_ARGS:-}"
+# an installed Kokkos that this LAMMPS links (build_lammps_kokkos.sh, ETD_DPD_KOKKOS_INSTALLED)
+[ ! -f "$prefix/kokkos-dir" ] || extra_cmake+=(-D ETD_DPD_KOKKOS_DIR="$(cat "$prefix/kokkos-dir")")
 targets=()
 for target in ${ETD_DPD_BUILD_TARGETS:-}; do targets+=(--target "$target"); done
 mkdir -p "$build"
