@@ -487,17 +487,21 @@ double pairs_across_index_halves(Lammps &l)
 // atom_modify sort 0 the fix sorts nothing (the data file's random order stays).
 TEST(KokkosStyles, KernelsKeepTheAtomsSorted)
 {
+  // bound: the share kept sorted stays below it (a random order gives about 0.5); measured
+  // 0.14-0.17 under the implicit scheme and 0.17-0.26 under the diagonal one, whose atoms move
+  // further between sorts, on 1 and 2 ranks
   struct Scheme {
     const char *fix;
     double dt;
     int steps;
+    double bound;
   };
   struct Case {
     bool kokkos;
     const char *sort;
   };
-  for (const Scheme &scheme : {Scheme{"etd scheme implicit", 0.005, 100},
-                               Scheme{"etd scheme diagonal", 0.002, 250}}) {
+  for (const Scheme &scheme : {Scheme{"etd scheme implicit", 0.005, 100, 0.2},
+                               Scheme{"etd scheme diagonal", 0.002, 250, 0.3}}) {
     std::vector<double> across;
     for (const Case &c : {Case{true, "1000"}, Case{false, "1000"}, Case{true, "0"}}) {
       Lammps l(MPI_COMM_WORLD, true, c.kokkos ? kokkos_args() : std::vector<std::string>{});
@@ -510,9 +514,7 @@ TEST(KokkosStyles, KernelsKeepTheAtomsSorted)
         EXPECT_EQ(kernel_solves(l) > 0.0, c.kokkos);
       across.push_back(pairs_across_index_halves(l));
     }
-    // (a random order gives about 0.5; kept sorted, 0.14-0.17 under the implicit scheme and
-    // 0.17-0.26 under the diagonal one, on 1 and 2 ranks)
-    EXPECT_LT(across[0], 0.3) << scheme.fix;
+    EXPECT_LT(across[0], scheme.bound) << scheme.fix;
     EXPECT_GT(across[1], 1.5 * across[0]) << scheme.fix << ": the CPU fix";
     EXPECT_GT(across[2], 1.5 * across[0]) << scheme.fix << ": atom_modify sort 0";
     std::printf("%s: pairs across the index halves: %.3f (kk), %.3f (CPU), %.3f (kk, sort 0)\n",
