@@ -235,10 +235,10 @@ if [ ! -f "$prefix/.complete" ]; then
   printf '%s\n' "$src" >"$prefix/source-dir"
   printf '%s\n' "$ksrc" >"$prefix/kokkos-source-dir"
   printf '%s\n' "$backend" >"$prefix/backend"
+  # where the package finds the Kokkos that this LAMMPS links, when not in the prefix (test.sh)
+  [ -z "$kinstalled" ] || printf '%s\n' "$kinstalled" >"$prefix/kokkos-dir"
   touch "$prefix/.complete"
 else
   log "reusing the KOKKOS LAMMPS $version at $prefix"
 fi
-# where the package finds the Kokkos that this LAMMPS links, when not in the prefix (test.sh)
-[ -z "$kinstalled" ] || printf '%s\n' "$kinstalled" >"$prefix/kokkos-dir"
 echo "LAMMPS_KOKKOS_PREFIX=$prefix"
