@@ -479,20 +479,22 @@ double pairs_across_index_halves(Lammps &l)
   return pairs > 0 ? double(across) / double(pairs) : 0.0;
 }
 
-// While fix etd/kk's kernels run (the implicit scheme's, and the diagonal scheme's with the pair
-// style's kernel), LAMMPS sorts the atoms at a reneighboring at least every 20 steps
-// (atom_modify sort is every 1000 by default): at these masses and steps the atoms otherwise
-// leave the sorted order within tens of steps (as under the CPU fix, which LAMMPS sorts at the
-// run's start only), and the threads' halves of the atoms then share many pairs. With
-// atom_modify sort 0 the fix sorts nothing (the data file's random order stays).
+// While the /kk kernels run (fix etd/kk's implicit scheme, the diagonal scheme with the pair
+// style's kernel, and the pair style's kernel under fix nve), LAMMPS sorts the atoms at a
+// reneighboring at least every 20 steps (atom_modify sort is every 1000 by default): at these
+// masses and steps the atoms otherwise leave the sorted order within tens to hundreds of steps
+// (as under the CPU styles, which LAMMPS sorts at the run's start only), and the threads' halves
+// of the atoms then share many pairs. With atom_modify sort 0 nothing sorts (the data file's
+// random order stays).
 TEST(KokkosStyles, KernelsKeepTheAtomsSorted)
 {
   // bound: the share kept sorted stays below it (a random order gives about 0.5); measured
-  // 0.14-0.17 under the implicit scheme and 0.17-0.26 under the diagonal one, whose atoms move
-  // further between sorts, on 1 and 2 ranks
+  // 0.14-0.17 under the implicit scheme, 0.17-0.26 under the diagonal one, whose atoms move
+  // further between sorts, and 0.14-0.17 under fix nve (0.49 where the pair style left LAMMPS's
+  // period), on 1 and 2 ranks
   struct Scheme {
     const char *fix;
-    double dt;
+    double mass, dt;
     int steps;
     double bound;
   };
@@ -500,12 +502,13 @@ TEST(KokkosStyles, KernelsKeepTheAtomsSorted)
     bool kokkos;
     const char *sort;
   };
-  for (const Scheme &scheme : {Scheme{"etd scheme implicit", 0.005, 100, 0.2},
-                               Scheme{"etd scheme diagonal", 0.002, 250, 0.3}}) {
+  for (const Scheme &scheme : {Scheme{"etd scheme implicit", 0.01, 0.005, 100, 0.2},
+                               Scheme{"etd scheme diagonal", 0.01, 0.002, 250, 0.3},
+                               Scheme{"nve", 1.0, 0.01, 500, 0.3}}) {
     std::vector<double> across;
     for (const Case &c : {Case{true, "1000"}, Case{false, "1000"}, Case{true, "0"}}) {
       Lammps l(MPI_COMM_WORLD, true, c.kokkos ? kokkos_args() : std::vector<std::string>{});
-      setup_box(l, 0.01, scheme.dt);
+      setup_box(l, scheme.mass, scheme.dt);
       l.cmds(GEN_S2);
       l.cmds({std::string("atom_modify sort ") + c.sort + " 0.0",
               std::string("fix integrate all ") + scheme.fix,

@@ -26,6 +26,8 @@
 
 #include "pair_dpd_style.h"
 
+#include "atom_sort_schedule.h"
+
 #include "kokkos_pair_views.h"
 #include "kokkos_type.h"
 #include "pair_kokkos.h"
@@ -86,6 +88,7 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
 
  private:
   bool host_loop;    // this run is served by the CPU loop (see the header)
+  etd::kk::AtomSortSchedule sorting;    // the kernel splits the atoms among threads by index
   int neighflag;
   int newton_pair_kk;    // forces on ghosts are summed back to their owners
   int nlocal_kk;

@@ -149,6 +149,7 @@ template <class DeviceType, class Style>
 void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag)
 {
   this->ev_init(eflag, vflag, 0);
+  sorting.keep_due(this->atom, this->update->ntimestep);
   bind_atoms();
   make_scatter_views();
   const bool extras = this->prepare_extras();
