@@ -25,8 +25,11 @@ export OMP_PROC_BIND=spread OMP_PLACES=threads
 # name | ranks | threads (0: no Kokkos) | pair style | integrator (nve; etd: fix etd diagonal;
 # implicit: fix etd scheme implicit, and shardlow: LAMMPS's fix shardlow with dpd/fdt/energy, each
 # at its largest step within tolerance for GW m = 0.01 in the accuracy matrix: 0.005 and 0.004)
+# [| atom_modify sort period, LAMMPS's 1000 where not given: the /kk styles sort every 20 steps
+# themselves, and the CPU style on ranks with that period is the ranks' best]
 setups=(
   "dpd/gen, 2 ranks|2|0|dpd/gen|nve"
+  "dpd/gen, 2 ranks, atom_modify sort 20|2|0|dpd/gen|nve|20"
   "dpd/gen/kk, 1 rank x 2 threads|1|2|dpd/gen|nve"
   "dpd/gen/kk, 2 ranks x 1 thread|2|1|dpd/gen|nve"
   "dpd/kk, 1 rank x 2 threads|1|2|dpd|nve"
@@ -59,9 +62,10 @@ trap 'rm -rf "$work"' EXIT
 g++ -O2 -fopenmp "$here/sharing_probe.cpp" -o "$work/sharing_probe"
 for round in $(seq "$first_round" $((first_round + rounds - 1))); do
   for setup in "${setups[@]}"; do
-    IFS='|' read -r name ranks threads pair integrator <<<"$setup"
+    IFS='|' read -r name ranks threads pair integrator sort <<<"$setup"
+    sort=${sort:-1000}
     args=(-in "$here/in.kokkos_throughput" -var plugin "$plugin" -var pair "$pair" -var steps "$steps"
-          -var integrator "$integrator"
+          -var integrator "$integrator" -var sort "$sort"
           -log "$work/log" -screen none)
     bind=()    # Open MPI binds each of 1 or 2 ranks to one core: threads would share it
     case "$integrator" in  # (nve and etd: the input's defaults for their masses)
@@ -79,9 +83,9 @@ for round in $(seq "$first_round" $((first_round + rounds - 1))); do
     # (the pair style's list: perpetual, or occasional where fix etd's own search feeds it)
     style=$(awk '/^BENCH/{b=1} /pair [a-z\/]+, (perpetual|occasional)/{s=$3} END{print s}' "$work/log")
     lammps=$(sed -n '1s/^LAMMPS (\(.*\))$/\1/p' "$work/log")
-    printf '{"sitting": %d, "round": %d, "setup": "%s", "pair_style": "%s", "integrator": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "dt": %s, "loop_s": %s, "lammps": "%s", "cores": %d, "sharing_ms": %s, "omp_proc_bind": "%s", "omp_places": "%s"}\n' \
+    printf '{"sitting": %d, "round": %d, "setup": "%s", "pair_style": "%s", "integrator": "%s", "ranks": %d, "threads": %d, "atoms": 24000, "steps": %d, "dt": %s, "loop_s": %s, "lammps": "%s", "cores": %d, "sharing_ms": %s, "omp_proc_bind": "%s", "omp_places": "%s", "sort": %d}\n' \
       "$sitting" "$round" "$name" "${style%,}" "$integrator" "$ranks" "$threads" "$steps" "$dt" "$loop" "$lammps" "$(nproc)" "$sharing" \
-      "$OMP_PROC_BIND" "$OMP_PLACES" | tee -a "$out"
+      "$OMP_PROC_BIND" "$OMP_PLACES" "$sort" | tee -a "$out"
   done
 done
 /usr/bin/python3 "$here/table.py" "$out" | tee "$here/results/throughput.md"

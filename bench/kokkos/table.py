@@ -4,7 +4,8 @@ set-up, mean +- sd over rounds, and the ratio to the CPU styles on 2 MPI ranks w
 integrator in the same round (mean +- sd, lowest); the large-step integrators at equal accuracy
 (the implicit scheme and LAMMPS's fix shardlow, each at its largest step within tolerance), in
 simulated time per second; and, for the threaded set-ups where run.sh read the sharing probe just
-before the run (sharing_ms), the ratio in each of the machine's two states.
+before the run (sharing_ms), the ratio in each of the machine's two states; and the threaded set-ups
+against the CPU style on 2 ranks with a shorter atom_modify sort period, where run.sh ran it.
 
 Usage: /usr/bin/python3 bench/kokkos/table.py results/throughput.jsonl > results/throughput.md
 """
@@ -21,6 +22,8 @@ INTEGRATORS = {"nve": "fix nve", "etd": "fix etd scheme diagonal",
 # the integrators compared at equal accuracy, and the one their ratios are taken to
 LARGE_STEP = ("implicit", "shardlow")
 PEER = "shardlow"
+# atom_modify sort's default period, that of the baselines
+LAMMPS_SORT = 1000
 
 
 def binding(runs):
@@ -38,7 +41,7 @@ def baseline(runs, integrator):
     """The set-up on 2 MPI ranks without Kokkos with this integrator (dpd/gen where there are
     several)."""
     cpu = [r for r in runs if r.get("integrator", "nve") == integrator
-           and r["ranks"] == 2 and r["threads"] == 0]
+           and r["ranks"] == 2 and r["threads"] == 0 and r.get("sort", LAMMPS_SORT) == LAMMPS_SORT]
     return next((r for r in cpu if r["pair_style"] == "dpd/gen"), cpu[0])["setup"]
 
 
@@ -72,8 +75,33 @@ def main(path):
         print(f"| {setup} | {INTEGRATORS[integrator]} | {run['pair_style']} | "
               f"{statistics.mean(rates):.3e} +- {sd(rates):.1e} | "
               f"{statistics.mean(ratios):.3f} +- {sd(ratios):.3f} ({min(ratios):.3f}) |")
+    shorter_sort(runs, rounds, loop)
     equal_accuracy(runs, rounds, loop)
     states(runs, rounds, loop)
+
+
+def shorter_sort(runs, rounds, loop):
+    """The threaded set-ups against the CPU style on 2 ranks with a shorter atom_modify sort
+    period (the /kk styles sort every 20 steps themselves), with the same integrator."""
+    sorted_bases = [r for r in runs if r["round"] == rounds[0] and r["threads"] == 0
+                    and r["ranks"] == 2 and r.get("sort", LAMMPS_SORT) != LAMMPS_SORT]
+    if not sorted_bases:
+        return
+    sd = statistics.stdev if len(rounds) > 1 else (lambda values: 0.0)
+    print()
+    print("Against the CPU style on 2 MPI ranks with a shorter atom_modify sort period (the one "
+          "the /kk styles keep while their kernels run), in the same round:")
+    print()
+    print("| set-up | against | ratio (mean +- sd, lowest) | each round |")
+    print("|---|---|---|---|")
+    for base in sorted_bases:
+        threaded = dict.fromkeys(r["setup"] for r in runs if r["threads"] > 1
+                                 and r.get("integrator", "nve") == base.get("integrator", "nve"))
+        for setup in threaded:
+            ratios = [loop[(k, base["setup"])] / loop[(k, setup)] for k in rounds]
+            print(f"| {setup} | {base['setup']} | {statistics.mean(ratios):.3f} +- "
+                  f"{sd(ratios):.3f} ({min(ratios):.3f}) | "
+                  f"{', '.join(f'{x:.3f}' for x in ratios)} |")
 
 
 def equal_accuracy(runs, rounds, loop):
