@@ -12,6 +12,9 @@
 #                         (dpd/gen/kk and dpd/gen with fix nve, m = 1, dt = 0.01)
 #   ETD_DPD_BENCH_BIND=1  the threads bound as run.sh binds them (OMP_PROC_BIND=spread,
 #                         OMP_PLACES=threads); default unbound, as the sittings before 2026-11-28
+#   ETD_DPD_BENCH_OUT     a FILE.jsonl to which each round's runs are written (replaced), and
+#                         alternate_table.py's table of them into FILE.md: a comparison's home
+#                         when a document quotes it
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -37,6 +40,11 @@ else
 fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+out=${ETD_DPD_BENCH_OUT:-}
+if [ -n "$out" ]; then
+  case "$out" in *.jsonl) ;; *) echo "ETD_DPD_BENCH_OUT=$out: a FILE.jsonl" >&2; exit 2 ;; esac
+  : >"$out"
+fi
 loop_time() { awk '/^BENCH/{b=1} b&&/^Loop time/{print $4; exit}' "$work/log"; }
 # a variant's name: the plugin's full path, with @N where it sets atom_modify sort
 variant_name() {
@@ -57,6 +65,9 @@ for round in $(seq "$rounds"); do
     ranks=$(loop_time)
     echo "$round $name $threads $ranks" | tee -a "$work/times" |
       awk '{printf "round %d %s: 2 threads %.3f s, 2 ranks %.3f s, ratio %.3f\n", $1, $2, $3, $4, $4 / $3}'
+    [ -z "$out" ] || printf '{"round": %d, "variant": "%s", "scheme": "%s", "steps": %d, "sort": %d, "omp_proc_bind": "%s", "threads_s": %s, "ranks_s": %s, "lammps": "%s", "cores": %d}\n' \
+      "$round" "$(basename "$name")" "${ETD_DPD_BENCH_SCHEME:-implicit}" "$steps" "$sort" "$OMP_PROC_BIND" \
+      "$threads" "$ranks" "$(sed -n '1s/^LAMMPS (\(.*\))$/\1/p' "$work/log")" "$(nproc)" >>"$out"
   done
 done
 for variant in "$@"; do
@@ -70,3 +81,4 @@ for k, what in enumerate(("2 threads (s)", "2 ranks (s)", "ratio")):
     print(f"{name}: {what}: median {statistics.median(col):.3f}, range {min(col):.3f}-{max(col):.3f} (n = {len(col)})")
 ' "$name"
 done
+[ -z "$out" ] || /usr/bin/python3 "$here/alternate_table.py" "$out" >"${out%.jsonl}.md"
