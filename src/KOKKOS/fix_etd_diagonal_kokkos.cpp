@@ -60,24 +60,6 @@ template <class DeviceType> void FixETDDiagonalKokkos<DeviceType>::init()
   datamask_modify = on_device ? DEVICE_MODIFY : ALL_MASK;
 }
 
-template <class DeviceType> int FixETDDiagonalKokkos<DeviceType>::setmask()
-{
-  return FixETDDiagonal::setmask() | FixConst::PRE_EXCHANGE;
-}
-
-template <class DeviceType> void FixETDDiagonalKokkos<DeviceType>::setup(int vflag)
-{
-  FixETDDiagonal::setup(vflag);
-  sorting.run_started(update->ntimestep);
-}
-
-// LAMMPS sorts the atoms often while the kernels run (atom_sort_schedule.h): the pair style's
-// kernel splits the atoms among the threads by index too
-template <class DeviceType> void FixETDDiagonalKokkos<DeviceType>::pre_exchange()
-{
-  if (on_device) sorting.before_exchange(atom, update->ntimestep);
-}
-
 template <class DeviceType> void FixETDDiagonalKokkos<DeviceType>::initial_integrate(int vflag)
 {
   if (!on_device) {

@@ -3,11 +3,12 @@
 // with the friction diagonal of the pair style) runs in Kokkos kernels on the atoms' device
 // arrays; it needs the friction diagonal from a KOKKOS pair style (dpd/gen/kk) that is the only
 // DPD style. Other options run the CPU fix's step on the host (a WARNING at init names why),
-// with the same results. fix etd/kk scheme implicit: fix_etd_implicit_kokkos.h.
+// with the same results. The kernels split the atoms among threads by index; the pair style's
+// kernel, which always runs with them, keeps the atoms sorted (atom_sort_schedule.h).
+// fix etd/kk scheme implicit: fix_etd_implicit_kokkos.h.
 #ifndef ETD_FIX_ETD_DIAGONAL_KOKKOS_H
 #define ETD_FIX_ETD_DIAGONAL_KOKKOS_H
 
-#include "atom_sort_schedule.h"
 #include "fix_etd_diagonal.h"
 
 #include "kokkos_type.h"
@@ -21,10 +22,7 @@ template <class DeviceType> class FixETDDiagonalKokkos : public FixETDDiagonal {
   using AT = ArrayTypes<DeviceType>;
 
   FixETDDiagonalKokkos(class LAMMPS *, int, char **);
-  int setmask() override;
   void init() override;
-  void setup(int vflag) override;
-  void pre_exchange() override;
   void initial_integrate(int) override;
   void final_integrate() override;
 
@@ -35,7 +33,6 @@ template <class DeviceType> class FixETDDiagonalKokkos : public FixETDDiagonal {
   // the pair style's friction diagonal where DeviceType reads it
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> friction_on_device(int nlocal);
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> d_friction_copy;
-  etd::kk::AtomSortSchedule sorting;    // while the kernels run (pre_exchange())
 };
 
 // Registers fix etd/kk, etd/kk/device and etd/kk/host with LAMMPS.
