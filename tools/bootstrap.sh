@@ -25,11 +25,9 @@ jobs=${ETD_DPD_JOBS:-$(nproc)}
 log() { printf '[etd-dpd] %s\n' "$*" >&2; }
 
 # ---- 1. Debian packages ------------------------------------------------------------------
-packages=(build-essential cmake libopenmpi-dev openmpi-bin libgtest-dev librandom123-dev libboost-dev
-          python3 python3-numpy python3-scipy python3-matplotlib python3-sphinx
-          python3-sphinx-rtd-theme dpkg-dev xz-utils curl gpgv debian-archive-keyring)
+source "$here/tools/debian_packages.sh"
 missing=()
-for p in "${packages[@]}"; do
+for p in "${debian_packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 sudo_cmd=""; [ "$(id -u)" = 0 ] || sudo_cmd="sudo"

@@ -24,9 +24,8 @@ mirror=${ETD_DPD_DEBIAN_MIRROR:-http://deb.debian.org/debian}
 build=${ETD_DPD_KOKKOS_BUILD:-build-kokkos-sid-chroot}
 case "$build" in /*|*..*) die "ETD_DPD_KOKKOS_BUILD=$build: a folder inside the repository, relative to it" ;; esac
 # tools/bootstrap.sh's packages, and Debian's Kokkos
-packages=(build-essential cmake libopenmpi-dev openmpi-bin libgtest-dev librandom123-dev libboost-dev
-          python3 python3-numpy python3-scipy python3-matplotlib python3-sphinx
-          python3-sphinx-rtd-theme dpkg-dev xz-utils curl gpgv debian-archive-keyring libkokkos-dev)
+source "$here/tools/debian_packages.sh"
+packages=("${debian_packages[@]}" libkokkos-dev)
 
 if [ ! -x "$root/usr/bin/apt-get" ]; then
   command -v debootstrap >/dev/null || die "debootstrap is needed (Debian package debootstrap)"
