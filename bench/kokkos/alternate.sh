@@ -2,9 +2,9 @@
 # Builds of the plugin side by side on the fix etd set-ups of run.sh (in.kokkos_throughput,
 # GW m = 0.01, 24,000 atoms; scheme implicit at dt = 0.005 by default): for each variant, fix
 # etd/kk on 1 rank with 2 threads, and fix etd on 2 ranks, alternated round after round so that
-# the machine's slow spells fall on all of them alike. Prints every run and, per variant and
-# set-up, the median and the range, and each round's ratio (2 ranks / 2 threads of the same
-# variant).
+# the machine's slow spells fall on all of them alike. Prints every run and then
+# alternate_table.py's table: per variant and set-up, the median and the range, and each round's
+# ratio (2 ranks / 2 threads of the same variant).
 #   KOKKOS_SOURCE=... ETD_DPD_LAMMPS=trixie bash bench/kokkos/alternate.sh ROUNDS STEPS A.so B.so ...
 # A variant PLUGIN.so@N runs with atom_modify sort N (the input's variable sort; default 1000).
 # Environment:
@@ -41,10 +41,9 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 out=${ETD_DPD_BENCH_OUT:-}
-if [ -n "$out" ]; then
-  case "$out" in *.jsonl) ;; *) echo "ETD_DPD_BENCH_OUT=$out: a FILE.jsonl" >&2; exit 2 ;; esac
-  : >"$out"
-fi
+case "$out" in ''|*.jsonl) ;; *) echo "ETD_DPD_BENCH_OUT=$out: a FILE.jsonl" >&2; exit 2 ;; esac
+runs=${out:-$work/runs.jsonl}
+: >"$runs"
 loop_time() { awk '/^BENCH/{b=1} b&&/^Loop time/{print $4; exit}' "$work/log"; }
 # a variant's name: the plugin's full path, with @N where it sets atom_modify sort
 variant_name() {
@@ -63,22 +62,15 @@ for round in $(seq "$rounds"); do
     threads=$(loop_time)
     "${mpi[@]}" -np 2 "$lmp" "${args[@]}"
     ranks=$(loop_time)
-    echo "$round $name $threads $ranks" | tee -a "$work/times" |
+    echo "$round $name $threads $ranks" |
       awk '{printf "round %d %s: 2 threads %.3f s, 2 ranks %.3f s, ratio %.3f\n", $1, $2, $3, $4, $4 / $3}'
-    [ -z "$out" ] || printf '{"round": %d, "variant": "%s", "scheme": "%s", "steps": %d, "sort": %d, "omp_proc_bind": "%s", "threads_s": %s, "ranks_s": %s, "lammps": "%s", "cores": %d}\n' \
-      "$round" "$(basename "$name")" "${ETD_DPD_BENCH_SCHEME:-implicit}" "$steps" "$sort" "$OMP_PROC_BIND" \
-      "$threads" "$ranks" "$(sed -n '1s/^LAMMPS (\(.*\))$/\1/p' "$work/log")" "$(nproc)" >>"$out"
+    printf '{"round": %d, "variant": "%s", "scheme": "%s", "steps": %d, "sort": %d, "omp_proc_bind": "%s", "threads_s": %s, "ranks_s": %s, "lammps": "%s", "cores": %d}\n' \
+      "$round" "$name" "${ETD_DPD_BENCH_SCHEME:-implicit}" "$steps" "$sort" "$OMP_PROC_BIND" \
+      "$threads" "$ranks" "$(sed -n '1s/^LAMMPS (\(.*\))$/\1/p' "$work/log")" "$(nproc)" >>"$runs"
   done
 done
-for variant in "$@"; do
-  name=$(variant_name "$variant")
-  awk -v v="$name" '$2 == v {print $3, $4, $4 / $3}' "$work/times" | /usr/bin/python3 -c '
-import statistics, sys
-rows = [list(map(float, line.split())) for line in sys.stdin]
-name = sys.argv[1]
-for k, what in enumerate(("2 threads (s)", "2 ranks (s)", "ratio")):
-    col = [r[k] for r in rows]
-    print(f"{name}: {what}: median {statistics.median(col):.3f}, range {min(col):.3f}-{max(col):.3f} (n = {len(col)})")
-' "$name"
-done
-[ -z "$out" ] || /usr/bin/python3 "$here/alternate_table.py" "$out" >"${out%.jsonl}.md"
+if [ -n "$out" ]; then
+  /usr/bin/python3 "$here/alternate_table.py" "$out" | tee "${out%.jsonl}.md"
+else
+  /usr/bin/python3 "$here/alternate_table.py" "$runs"
+fi
