@@ -2,8 +2,9 @@
 # The KOKKOS tools stop with an ERROR that names the bad argument or setting, before they build
 # or run anything: tools/kokkos/gpu.sh's arguments, and build_lammps_kokkos.sh's backend and
 # its LAMMPS/Kokkos pairing (a LAMMPS that asks for Kokkos 5 against a Kokkos 4.6 source,
-# without ETD_DPD_KOKKOS_AS_5), and an installed Kokkos that is none or serves no such backend. The LAMMPS and Kokkos trees here are stubs with the files the
-# script reads first; no network, no compiler.
+# without ETD_DPD_KOKKOS_AS_5), and an installed Kokkos that is none or serves no such backend.
+# The LAMMPS and Kokkos trees here are stubs with the files the script reads first; no network,
+# no compiler.
 set -uo pipefail
 # the settings a caller may have exported (tools/kokkos/test.sh's own) would change the paths
 unset ETD_DPD_KOKKOS_AS_5 ETD_DPD_KOKKOS_BACKEND ETD_DPD_KOKKOS_ARCH ETD_DPD_LAMMPS LAMMPS_SOURCE \
