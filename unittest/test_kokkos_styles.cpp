@@ -491,13 +491,16 @@ TEST(KokkosStyles, KernelsKeepTheAtomsSorted)
   // bound: the share kept sorted stays below it (a random order gives about 0.5); measured
   // 0.14-0.17 under the implicit scheme, 0.17-0.26 under the diagonal one, whose atoms move
   // further between sorts, and 0.14-0.17 under fix nve (0.49 where the pair style left LAMMPS's
-  // period), on 1 and 2 ranks
+  // period), on 1 and 2 ranks. On a GPU the pair style's kernel (fix nve, scheme diagonal) leaves
+  // LAMMPS's period, as dpd/kk does: its share is then the CPU style's; the implicit scheme,
+  // whose pair loop and search stay on the host's threads, keeps the atoms sorted there too.
   struct Scheme {
     const char *fix;
     double mass, dt;
     int steps;
     double bound;
   };
+  const bool gpu = std::getenv("ETD_KOKKOS_GPUS") != nullptr;
   struct Case {
     bool kokkos;
     const char *sort;
@@ -517,9 +520,15 @@ TEST(KokkosStyles, KernelsKeepTheAtomsSorted)
         EXPECT_EQ(kernel_solves(l) > 0.0, c.kokkos);
       across.push_back(pairs_across_index_halves(l));
     }
-    EXPECT_LT(across[0], scheme.bound) << scheme.fix;
-    EXPECT_GT(across[1], 1.5 * across[0]) << scheme.fix << ": the CPU fix";
-    EXPECT_GT(across[2], 1.5 * across[0]) << scheme.fix << ": atom_modify sort 0";
+    const bool sorts = !gpu || std::string(scheme.fix).find("implicit") != std::string::npos;
+    if (sorts) {
+      EXPECT_LT(across[0], scheme.bound) << scheme.fix;
+      EXPECT_GT(across[1], 1.5 * across[0]) << scheme.fix << ": the CPU fix";
+      EXPECT_GT(across[2], 1.5 * across[0]) << scheme.fix << ": atom_modify sort 0";
+    } else {
+      EXPECT_GT(across[0], scheme.bound) << scheme.fix << ": LAMMPS's period on a GPU";
+      EXPECT_GT(across[0], 0.75 * across[1]) << scheme.fix << ": as the CPU style";
+    }
     std::printf("%s: pairs across the index halves: %.3f (kk), %.3f (CPU), %.3f (kk, sort 0)\n",
                 scheme.fix, across[0], across[1], across[2]);
   }

@@ -19,6 +19,7 @@ CASES = {
     "etd-implicit": "fix etd/kk scheme implicit (dpd/gen)",
     "shardlow": "fix shardlow/kk + fix nve (dpd/fdt/energy/kk)",
     "etd-diagonal": "fix etd/kk scheme diagonal (dpd/gen/kk)",
+    "gen-nve-sort20": "dpd/gen/kk + fix nve, atom_modify sort 20",
 }
 COMPARISONS = (  # (case, against, measure, what); a tuple of cases: the fastest of them
     ("gen-nve", "dpd-nve", "rate", "dpd/gen/kk over dpd/kk, the device's defaults (atom-steps/s, same dt)"),
@@ -26,6 +27,8 @@ COMPARISONS = (  # (case, against, measure, what); a tuple of cases: the fastest
     (("gen-nve", "gen-nve-half"), ("dpd-nve", "dpd-nve-half"), "rate",
      "dpd/gen/kk over dpd/kk, each at its faster setting"),
     ("etd-implicit", "shardlow", "time", "implicit over shardlow/kk (atom time units/s, equal accuracy)"),
+    ("gen-nve-sort20", "gen-nve", "rate",
+     "dpd/gen/kk sorted every 20 steps over LAMMPS's period (the host threads' sorting, on the device)"),
 )
 
 

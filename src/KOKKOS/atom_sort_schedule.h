@@ -5,12 +5,15 @@
 // each other's data in every pair loop. At a reneighboring at least `every` steps after the last
 // sort, LAMMPS sorts again (its own sort and bins); a user period of `every` steps or fewer is
 // kept, and atom_modify sort 0 sorts never. A fix asks from its pre_exchange(); a pair style,
-// which has no hook there, keeps LAMMPS's next sort due from its compute().
+// which has no hook there, keeps LAMMPS's next sort due from its compute(). Only for kernels on
+// the host's threads (splits_by_index()).
 #ifndef ETD_ATOM_SORT_SCHEDULE_H
 #define ETD_ATOM_SORT_SCHEDULE_H
 
 #include "atom.h"
 #include "lmptype.h"
+
+#include <Kokkos_Core.hpp>
 
 #include <algorithm>
 
@@ -19,6 +22,13 @@ namespace etd::kk {
 class AtomSortSchedule {
  public:
   static constexpr int every = 20;
+
+  // whether kernels of ExecutionSpace split the atoms among threads by index: a host backend's
+  // (OpenMP, Threads, Serial), not a device's, whose threads each take an atom
+  template <class ExecutionSpace> static constexpr bool splits_by_index()
+  {
+    return Kokkos::SpaceAccessibility<ExecutionSpace, Kokkos::HostSpace>::accessible;
+  }
 
   // the run's setup sorted the atoms (Verlet::setup, where atom_modify sort is on)
   void run_started(LAMMPS_NS::bigint step) { last_sort = step; }

@@ -149,7 +149,10 @@ template <class DeviceType, class Style>
 void PairDPDLawKokkos<DeviceType, Style>::compute_on_device(int eflag, int vflag)
 {
   this->ev_init(eflag, vflag, 0);
-  sorting.keep_due(this->atom, this->update->ntimestep);
+  // (host threads only: a device's kernel runs one thread per atom and takes LAMMPS's period,
+  // as dpd/kk does; bench/kokkos/README.md, "On a GPU")
+  if (etd::kk::AtomSortSchedule::splits_by_index<typename DeviceType::execution_space>())
+    sorting.keep_due(this->atom, this->update->ntimestep);
   bind_atoms();
   make_scatter_views();
   const bool extras = this->prepare_extras();

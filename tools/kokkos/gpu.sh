@@ -19,6 +19,8 @@
 #            etd-implicit  fix etd/kk scheme implicit, dt 0.005 \  each at its largest
 #            shardlow      fix shardlow/kk + nve, dt 0.004     /  seed-checked step
 #            etd-diagonal  fix etd/kk scheme diagonal, dt 0.0005  (accuracy matrix, GW m = 0.01)
+#            gen-nve-sort20  gen-nve with atom_modify sort 20 (on a GPU dpd/gen/kk takes LAMMPS's
+#                          period, 1000 steps; on the host's threads it keeps sorting every 20)
 #          All but the -half cases run at the package kokkos defaults of the device (neigh full,
 #          newton off on a GPU). The implicit scheme and shardlow are compared in simulated time
 #          x atoms per second (atom-steps/s x dt): equal accuracy, bench/accuracy/results/matrix.md.
@@ -77,7 +79,7 @@ sizes=32000,256000,2048000
 steps=500
 warmup=20
 timeout=20
-cases=gen-nve,dpd-nve,gen-nve-half,dpd-nve-half,etd-implicit,shardlow,etd-diagonal
+cases=gen-nve,dpd-nve,gen-nve-half,dpd-nve-half,etd-implicit,shardlow,etd-diagonal,gen-nve-sort20
 results=
 until=
 while [ $# -gt 0 ]; do
@@ -105,7 +107,7 @@ for phase in ${phases//,/ }; do
   case "$phase" in build|pack|test|bench) ;; *) die "unknown phase $phase (--help)" ;; esac
 done
 for case_name in ${cases//,/ }; do
-  case "$case_name" in gen-nve|dpd-nve|gen-nve-half|dpd-nve-half|etd-implicit|shardlow|etd-diagonal) ;;
+  case "$case_name" in gen-nve|dpd-nve|gen-nve-half|dpd-nve-half|etd-implicit|shardlow|etd-diagonal|gen-nve-sort20) ;;
     *) die "unknown case $case_name (--help)" ;; esac
 done
 export ETD_DPD_KOKKOS_BACKEND=${ETD_DPD_KOKKOS_BACKEND:-cuda}
@@ -315,12 +317,13 @@ if has bench; then
     device="OpenMP, $threads of $(nproc) cores"  # nproc before OMP_NUM_THREADS, which it follows
   fi
   export OMP_PROC_BIND=false OMP_NUM_THREADS=$threads
-  # case | pair | integrator | dt | package kokkos keywords (none: the device's defaults)
+  # case | pair | integrator | dt | package kokkos keywords (none: the device's defaults) |
+  # atom_modify sort period (none: LAMMPS's, 1000)
   table=(
-    "gen-nve|dpd/gen|nve|0.0007|" "dpd-nve|dpd|nve|0.0007|"
-    "gen-nve-half|dpd/gen|nve|0.0007|neigh half newton on" "dpd-nve-half|dpd|nve|0.0007|neigh half newton on"
-    "etd-implicit|dpd/gen|implicit|0.005|" "shardlow|dpd/fdt/energy|shardlow|0.004|"
-    "etd-diagonal|dpd/gen|etd|0.0005|"
+    "gen-nve|dpd/gen|nve|0.0007||" "dpd-nve|dpd|nve|0.0007||"
+    "gen-nve-half|dpd/gen|nve|0.0007|neigh half newton on|" "dpd-nve-half|dpd|nve|0.0007|neigh half newton on|"
+    "etd-implicit|dpd/gen|implicit|0.005||" "shardlow|dpd/fdt/energy|shardlow|0.004||"
+    "etd-diagonal|dpd/gen|etd|0.0005||" "gen-nve-sort20|dpd/gen|nve|0.0007||20"
   )
   out=$results/gpu.jsonl
   : >"$out"
@@ -328,7 +331,8 @@ if has bench; then
   for natoms in ${sizes//,/ }; do
     for case_name in ${cases//,/ }; do
       row=$(printf '%s\n' "${table[@]}" | grep "^$case_name|")
-      IFS='|' read -r _ pair integrator dt words <<<"$row"
+      IFS='|' read -r _ pair integrator dt words sort <<<"$row"
+      sort=${sort:-1000}
       package=(); [ -z "$words" ] || { read -r -a package <<<"-pk kokkos $words"; }
       runlog=$logs/bench-$case_name-$natoms.log
       # a run ends within twice its --timeout (warm-up and timed loop) plus its set-up; one that
@@ -347,6 +351,7 @@ if has bench; then
       timeout "$limit" "$prefix/bin/lmp" -in "$root/bench/kokkos/in.kokkos_throughput" \
         -var plugin "$plugin" -var pair "$pair" -var integrator "$integrator" -var natoms "$natoms" \
         -var mass 0.01 -var dt "$dt" -var steps "$steps" -var warmup "$warmup" -var timeout "$timeout" -var timer_every 1 \
+        -var sort "$sort" \
         "${kokkos[@]}" "${package[@]}" -log "$runlog" -screen none >"${runlog%.log}.out" 2>&1 || status=$?
       loop=$(awk '/^BENCH/{b=1} b&&/^Loop time/{print $4, $9; exit}' "$runlog")
       style=$(awk '/pair [a-z\/]+, perpetual/{print $3; exit}' "$runlog")
@@ -358,9 +363,9 @@ if has bench; then
         continue
       fi
       read -r loop_s done_steps <<<"$loop"
-      printf '{"kind": "run", "backend": "%s", "device": "%s", "case": "%s", "pair_style": "%s", "integrator": "%s", "natoms": %d, "mass": 0.01, "dt": %s, "steps": %d, "loop_s": %s, "timed_out": %s, "lammps": "%s", "kokkos": "%s"}\n' \
+      printf '{"kind": "run", "backend": "%s", "device": "%s", "case": "%s", "pair_style": "%s", "integrator": "%s", "natoms": %d, "mass": 0.01, "dt": %s, "steps": %d, "loop_s": %s, "timed_out": %s, "lammps": "%s", "kokkos": "%s", "sort": %d}\n' \
         "$backend" "$device" "$case_name" "${style%,}" "$integrator" "$natoms" "$dt" "$done_steps" "$loop_s" \
-        "$([ "$done_steps" -lt "$steps" ] && echo true || echo false)" "$lammps_version" "${kokkos[*]} ${package[*]}" >>"$out"
+        "$([ "$done_steps" -lt "$steps" ] && echo true || echo false)" "$lammps_version" "${kokkos[*]} ${package[*]}" "$sort" >>"$out"
       log "$case_name $natoms atoms: $done_steps steps in $loop_s s ($(( $(date +%s) - t1 )) s with set-up)"
       table; copy_out
     done
