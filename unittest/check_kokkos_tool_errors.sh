@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The KOKKOS tools stop with an ERROR that names the bad argument or setting, before they build
-# or run anything: tools/kokkos/gpu.sh's arguments, and build_lammps_kokkos.sh's backend and
+# or run anything: tools/kokkos/gpu.sh's arguments, bench/kokkos's run.sh and alternate.sh's
+# arguments and settings, and build_lammps_kokkos.sh's backend and
 # its LAMMPS/Kokkos pairing (a LAMMPS that asks for Kokkos 5 against a Kokkos 4.6 source,
 # without ETD_DPD_KOKKOS_AS_5), and an installed Kokkos that is none or serves no such backend.
 # The LAMMPS and Kokkos trees here are stubs with the files the script reads first; no network,
@@ -8,7 +9,8 @@
 set -uo pipefail
 # the settings a caller may have exported (tools/kokkos/test.sh's own) would change the paths
 unset ETD_DPD_KOKKOS_AS_5 ETD_DPD_KOKKOS_BACKEND ETD_DPD_KOKKOS_ARCH ETD_DPD_LAMMPS LAMMPS_SOURCE \
-  KOKKOS_SOURCE ETD_DPD_KOKKOS_INSTALLED ETD_DPD_KOKKOS_SUITE ETD_DPD_GPU_SOURCES ETD_DPD_THREADS
+  KOKKOS_SOURCE ETD_DPD_KOKKOS_INSTALLED ETD_DPD_KOKKOS_SUITE ETD_DPD_GPU_SOURCES ETD_DPD_THREADS \
+  ETD_DPD_KOKKOS_BUILD ETD_DPD_BENCH_SCHEME ETD_DPD_BENCH_OUT ETD_DPD_BENCH_BIND ETD_DPD_BENCH_APPEND
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -33,6 +35,25 @@ expect_error "gpu.sh size not a number" "--sizes: 32k" bash "$gpu" --sizes 32000
 expect_error "gpu.sh zero steps" "--steps 0" bash "$gpu" --steps 0
 expect_error "gpu.sh warmup not a number" "--warmup -5" bash "$gpu" --warmup -5
 expect_error "gpu.sh timeout not a number" "--timeout 1m" bash "$gpu" --timeout 1m
+
+# the benchmark drivers of bench/kokkos, before they look up the KOKKOS LAMMPS
+alternate=$root/bench/kokkos/alternate.sh
+: >"$work/plugin.so"
+expect_error "alternate.sh without plugins" "usage: " bash "$alternate" 2 100
+expect_error "alternate.sh rounds not a number" "ROUNDS two" bash "$alternate" two 100 "$work/plugin.so"
+expect_error "alternate.sh zero steps" "STEPS 0" bash "$alternate" 2 0 "$work/plugin.so"
+expect_error "alternate.sh missing plugin" "no plugin at $work/none.so" bash "$alternate" 2 100 "$work/none.so"
+expect_error "alternate.sh sort not a number" "@often is no atom_modify sort period" \
+  bash "$alternate" 2 100 "$work/plugin.so@often"
+expect_error "alternate.sh unknown scheme" "ETD_DPD_BENCH_SCHEME=shardlow" \
+  env ETD_DPD_BENCH_SCHEME=shardlow bash "$alternate" 2 100 "$work/plugin.so"
+expect_error "alternate.sh output not .jsonl" "ETD_DPD_BENCH_OUT=$work/out.md" \
+  env ETD_DPD_BENCH_OUT="$work/out.md" bash "$alternate" 2 100 "$work/plugin.so"
+run=$root/bench/kokkos/run.sh
+expect_error "run.sh rounds not a number" "ROUNDS 3x" bash "$run" 3x
+expect_error "run.sh too many arguments" "usage: " bash "$run" 3 100 extra
+expect_error "run.sh missing plugin" "no KOKKOS plugin at $work/none/etddpdplugin.so" \
+  env ETD_DPD_KOKKOS_BUILD="$work/none" bash "$run" 1 10
 
 # stub trees: a LAMMPS that asks find_package(Kokkos 5.1.0), a Kokkos 4.6.1
 . "$root/unittest/kokkos_tool_stubs.sh"

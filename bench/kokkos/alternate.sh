@@ -18,21 +18,29 @@
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
-if [ $# -lt 3 ]; then
-  echo "usage: bash bench/kokkos/alternate.sh ROUNDS STEPS PLUGIN.so ..." >&2
-  exit 2
-fi
+die() { echo "ERROR: alternate.sh: $*" >&2; exit 2; }
+# the arguments and settings first, before the KOKKOS LAMMPS is looked up (or built)
+[ $# -ge 3 ] || die "usage: bash bench/kokkos/alternate.sh ROUNDS STEPS PLUGIN.so[@SORT] ..."
 rounds=$1 steps=$2
 shift 2
-prefix=$(bash "$root/tools/kokkos/build_lammps_kokkos.sh" | sed -n 's/^LAMMPS_KOKKOS_PREFIX=//p')
-lmp="$prefix/bin/lmp"
-mpi=(mpirun --oversubscribe); [ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root)
+[[ "$rounds" =~ ^[1-9][0-9]*$ ]] || die "ROUNDS $rounds: a positive number of rounds"
+[[ "$steps" =~ ^[1-9][0-9]*$ ]] || die "STEPS $steps: a positive number of steps"
+for variant in "$@"; do
+  [ -f "${variant%@*}" ] || die "no plugin at ${variant%@*}"
+  [ "${variant%@*}" = "$variant" ] || [[ "${variant##*@}" =~ ^[0-9]+$ ]] ||
+    die "$variant: @${variant##*@} is no atom_modify sort period"
+done
 case "${ETD_DPD_BENCH_SCHEME:-implicit}" in
   implicit) scheme=(-var integrator implicit -var dt 0.005) ;;
   diagonal) scheme=(-var integrator etd -var dt 0.002) ;;
   nve) scheme=(-var integrator nve) ;;
-  *) echo "ETD_DPD_BENCH_SCHEME=$ETD_DPD_BENCH_SCHEME: implicit, diagonal or nve" >&2; exit 2 ;;
+  *) die "ETD_DPD_BENCH_SCHEME=$ETD_DPD_BENCH_SCHEME: implicit, diagonal or nve" ;;
 esac
+out=${ETD_DPD_BENCH_OUT:-}
+case "$out" in ''|*.jsonl) ;; *) die "ETD_DPD_BENCH_OUT=$out: a FILE.jsonl" ;; esac
+prefix=$(bash "$root/tools/kokkos/build_lammps_kokkos.sh" | sed -n 's/^LAMMPS_KOKKOS_PREFIX=//p')
+lmp="$prefix/bin/lmp"
+mpi=(mpirun --oversubscribe); [ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root)
 if [ "${ETD_DPD_BENCH_BIND:-0}" = 1 ]; then
   export OMP_PROC_BIND=spread OMP_PLACES=threads
 else
@@ -40,8 +48,6 @@ else
 fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-out=${ETD_DPD_BENCH_OUT:-}
-case "$out" in ''|*.jsonl) ;; *) echo "ETD_DPD_BENCH_OUT=$out: a FILE.jsonl" >&2; exit 2 ;; esac
 runs=${out:-$work/runs.jsonl}
 : >"$runs"
 loop_time() { awk '/^BENCH/{b=1} b&&/^Loop time/{print $4; exit}' "$work/log"; }

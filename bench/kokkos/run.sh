@@ -11,12 +11,17 @@
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
+die() { echo "ERROR: run.sh: $*" >&2; exit 2; }
 rounds=${1:-3}
 steps=${2:-1000}
-prefix=$(bash "$root/tools/kokkos/build_lammps_kokkos.sh" | sed -n 's/^LAMMPS_KOKKOS_PREFIX=//p')
+# the arguments and the plugin first, before the KOKKOS LAMMPS is looked up (or built)
+[ $# -le 2 ] || die "usage: bash bench/kokkos/run.sh [ROUNDS [STEPS]]"
+[[ "$rounds" =~ ^[1-9][0-9]*$ ]] || die "ROUNDS $rounds: a positive number of rounds"
+[[ "$steps" =~ ^[1-9][0-9]*$ ]] || die "STEPS $steps: a positive number of steps"
 build=${ETD_DPD_KOKKOS_BUILD:-$root/build-kokkos}
 plugin="$build/etddpdplugin.so"
-[ -f "$plugin" ] || { echo "no KOKKOS plugin at $plugin: run tools/kokkos/test.sh first" >&2; exit 1; }
+[ -f "$plugin" ] || die "no KOKKOS plugin at $plugin: run tools/kokkos/test.sh first"
+prefix=$(bash "$root/tools/kokkos/build_lammps_kokkos.sh" | sed -n 's/^LAMMPS_KOKKOS_PREFIX=//p')
 lmp="$prefix/bin/lmp"
 mpi=(mpirun --oversubscribe); [ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root)
 # threads bound one to a place, spread over them: LAMMPS's advice for KOKKOS with OpenMP
