@@ -53,7 +53,7 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
     kk::upload(mobile_, mobile, nowned_);
     for (Values *v : {&r_, &p_, &w_, &s_}) kk::grow(*v, n);
     for (Values *v : {&z_, &x_}) kk::grow(*v, 3 * npartners_);
-    kk::grow(inverse_, 9 * nowned_);
+    kk::grow(inverse_, 6 * nowned_);
     kk::grow(held_, n);
     Kokkos::deep_copy(p_, 0.0);
     Kokkos::deep_copy(s_, 0.0);
@@ -153,7 +153,9 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
   // (The kernels and their launchers are public: CUDA requires a kernel's functor type and the
   // function enclosing an extended device lambda to be.)
 
-  // each atom's block of mass_weight M + friction_weight G, inverted (zero where held)
+  // each atom's block of mass_weight M + friction_weight G, inverted (zero where held): its
+  // 6 distinct values (the inverse is symmetric; the CG's passes are bound by memory traffic),
+  // and whether any unknown of this rank is held (where none is, the passes skip held_)
   void precondition_setup()
   {
     auto offsets = incidence_.offsets();
@@ -168,9 +170,10 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
     if (by_pairs)    // gamma w_D e e^T, the same on both ends
       sums_.add(typename PairSums::BlockShares{geometry}, nowned_);
     const Shares shares = sums_.shares(6, nowned_);
-    Kokkos::parallel_for(
+    int nheld = 0;
+    Kokkos::parallel_reduce(
         "etd:precondition_setup", Kokkos::RangePolicy<execution_space>(0, nowned_),
-        KOKKOS_LAMBDA(const int a) {
+        KOKKOS_LAMBDA(const int a, int &held_here) {
           double block[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
           if (by_pairs) {
             for (int k = 0; k < 6; k++) block[k] = shares.take(6 * a + k);
@@ -189,9 +192,15 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
           }
           double m[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
           if (mobile(a)) invert_block(block, mass_weight * inertia(3 * a), friction_weight, m);
-          for (int k = 0; k < 9; k++) inverse(9 * a + k) = m[k];
-          for (int k = 0; k < 3; k++) held(3 * a + k) = (m[4 * k] != 0.0) ? 0.0 : 1.0;
-        });
+          const int upper[6] = {0, 1, 2, 4, 5, 8};    // xx xy xz yy yz zz
+          for (int k = 0; k < 6; k++) inverse(6 * a + k) = m[upper[k]];
+          for (int k = 0; k < 3; k++) {
+            held(3 * a + k) = (m[4 * k] != 0.0) ? 0.0 : 1.0;
+            if (m[4 * k] == 0.0) held_here++;
+          }
+        },
+        nheld);
+    any_held_ = nheld > 0;
   }
 
   // x from start (or the block-Jacobi solution), then r = b - A x on the solved unknowns
@@ -201,6 +210,7 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
     auto b = b_;
     auto inverse = inverse_;
     auto held = held_;
+    const bool any_held = any_held_;
     if (start) {
       kk::upload(w_, start, n);    // w_ as scratch
       auto given = w_;
@@ -212,7 +222,7 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
           "etd:start_jacobi", Kokkos::RangePolicy<execution_space>(0, nowned_),
           KOKKOS_LAMBDA(const int a) {
             const double ba[3] = {b(3 * a), b(3 * a + 1), b(3 * a + 2)};
-            block_product(a, inverse, held, ba, x);
+            block_product(a, inverse, held, any_held, ba, x);
           });
     }
     auto r = r_;
@@ -260,15 +270,18 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
         });
   }
 
-  // out_k = (M_a^-1 v)_k of atom a's inverted block, 0 where the unknown is held
+  // out_k = (M_a^-1 v)_k of atom a's inverted block (its 6 values), 0 where the unknown is held
   KOKKOS_INLINE_FUNCTION static void block_product(int a, const Values &inverse,
-                                                   const Values &held, const double v[3],
-                                                   const Values &out)
+                                                   const Values &held, bool any_held,
+                                                   const double v[3], const Values &out)
   {
+    // row k's three entries among xx xy xz yy yz zz
+    constexpr int entry[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
     for (int k = 0; k < 3; k++) {
-      const int row = 9 * a + 3 * k;
-      out(3 * a + k) = held(3 * a + k) == 0.0
-          ? inverse(row) * v[0] + inverse(row + 1) * v[1] + inverse(row + 2) * v[2]
+      const int block = 6 * a;
+      out(3 * a + k) = (!any_held || held(3 * a + k) == 0.0)
+          ? inverse(block + entry[k][0]) * v[0] + inverse(block + entry[k][1]) * v[1] +
+              inverse(block + entry[k][2]) * v[2]
           : 0.0;
     }
   }
@@ -280,11 +293,12 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
     auto r = r_;
     auto inverse = inverse_;
     auto held = held_;
+    const bool any_held = any_held_;
     Kokkos::parallel_for(
         "etd:precondition", Kokkos::RangePolicy<execution_space>(0, nowned_),
         KOKKOS_LAMBDA(const int a) {
           const double ra[3] = {r(3 * a), r(3 * a + 1), r(3 * a + 2)};
-          block_product(a, inverse, held, ra, z);
+          block_product(a, inverse, held, any_held, ra, z);
         });
     remove_mean(z_);
   }
@@ -301,6 +315,7 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
     auto w = w_;
     auto inverse = inverse_;
     auto held = held_;
+    const bool any_held = any_held_;
     Kokkos::parallel_for(
         "etd:cg_update", Kokkos::RangePolicy<execution_space>(0, nowned_),
         KOKKOS_LAMBDA(const int a) {
@@ -313,7 +328,7 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
             ra[k] = r(d) - alpha * s(d);
             r(d) = ra[k];
           }
-          block_product(a, inverse, held, ra, z);
+          block_product(a, inverse, held, any_held, ra, z);
         });
     remove_mean(z_);
   }
@@ -340,6 +355,7 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
     Geometry geometry;
     double mass_weight, friction_weight;
     bool with_b;
+    bool any_held;    // else held is all zero and not read
     bool applied;    // w already holds A z (projected)
     bool by_pairs;   // else A z from the pairs' shares (by pairs) or the incidence list
     Shares shares;
@@ -365,7 +381,7 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
                    friction_weight, az);
       for (int k = 0; k < 3; k++) {
         const int d = 3 * a + k;
-        const double wd = held(d) == 0.0 ? az[k] : 0.0;
+        const double wd = (!any_held || held(d) == 0.0) ? az[k] : 0.0;
         w(d) = wd;
         const double rd = r(d), zd = z(d), sd = s(d);
         sums[RZ] += rd * zd;
@@ -392,7 +408,7 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
     }
     ApplyAndSum functor{cg_detail::NSUMS, z_, w_, r_, s_, b_, inertia_, held_,
                         incidence_.offsets(), incidence_.incidence(), incidence_.other(),
-                        geometry_, mass_weight_, friction_weight_, with_b, deflate_,
+                        geometry_, mass_weight_, friction_weight_, with_b, any_held_, deflate_,
                         by_pairs_, sums_.shares(3, nowned_)};
     Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> result(
         sums, cg_detail::NSUMS);
@@ -422,6 +438,7 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
   double active_[3] = {0.0, 0.0, 0.0};    // per component, the unknowns solved over all ranks
   Indices mobile_;
   Values inverse_, held_;    // held_: 1 on unknowns held at their start
+  bool any_held_ = false;    // any unknown of this rank held (precondition_setup())
   Values r_, z_, p_, s_;     // z_ over the partners: G acts on it
 };
 
