@@ -79,11 +79,10 @@ class FixETDImplicit : public Fix, public etd::DpdFrictionIntegrator, public etd
     double cutoff = 0.0;              // the largest cutoff of the pair style and the friction
     double margin = 0.0;              // searched out to cutoff + margin
   } own;
-  // Who runs the step's loops over the atoms and the search's slabs: `chunks` at once by
+  // Who runs the search's slabs and the step's loops over the atoms: `chunks` at once by
   // `runner` (the KOKKOS variant: its host threads); here one, in place, so that the CPU fix's
-  // sums are those of plain loops. search_threads, where it has a runner, takes the search.
+  // sums are those of plain loops
   etd::ParallelRanges threads;
-  etd::ParallelRanges search_threads;
   const char *own_pairs_unsupported() const;
   bool own_pairs_pay() const;    // the default's choice: the search's cells stay sparse
   void search_own_pairs(double margin);

@@ -83,8 +83,8 @@ void FixETDImplicit::search_own_pairs(double margin)
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
   const double *x = nall > 0 ? atom->x[0] : nullptr;
-  const etd::ParallelRanges &by = search_threads.runner ? search_threads : threads;
-  own.search.build(x, nlocal, nall, own.cutoff + margin, list_newton_off, by.chunks, by.runner);
+  own.search.build(x, nlocal, nall, own.cutoff + margin, list_newton_off, threads.chunks,
+                   threads.runner);
   own.view = own.search.view();
   own.positions.assign(x, x + 3 * nlocal);
   partners.invalidate();    // the ghosts these pairs use

@@ -23,10 +23,6 @@ FixETDImplicitKokkos<DeviceType>::FixETDImplicitKokkos(LAMMPS *lmp, int narg, ch
 {
   threads.chunks = Kokkos::DefaultHostExecutionSpace().concurrency();
   threads.runner = etd::kk::host_chunk_runner("etd:host_loops");
-  // the search in four slabs per thread, each taken by the next free thread: slabs differ in
-  // work and the cores in speed, and the list is the same however the slabs are shared out
-  search_threads.chunks = 4 * threads.chunks;
-  search_threads.runner = etd::kk::host_dynamic_runner("etd:search");
 }
 
 template <class DeviceType> void *FixETDImplicitKokkos<DeviceType>::extract(const char *name, int &dim)

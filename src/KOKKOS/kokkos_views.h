@@ -31,28 +31,14 @@ template <class View> void grow(View &view, std::size_t n)
 }
 
 // Runs body(k) for k in [0, n) on the host's threads (Kokkos's default host execution space),
-// a kernel labelled label: the runner of the host loops that take chunks (the step's loops over
-// the atoms, the pair style's rows)
+// a kernel labelled label: the runner of the host loops that take chunks (CellPairSearch's
+// slabs, the pair style's rows)
 inline std::function<void(int, const std::function<void(int)> &)> host_chunk_runner(
     const char *label)
 {
   return [label](int n, const std::function<void(int)> &body) {
     Kokkos::parallel_for(label, Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, n),
                          [&](const int k) { body(k); });
-  };
-}
-
-// The same with each k taken by the next free thread (Kokkos's dynamic schedule): for loops
-// whose result does not depend on which thread runs which k
-inline std::function<void(int, const std::function<void(int)> &)> host_dynamic_runner(
-    const char *label)
-{
-  return [label](int n, const std::function<void(int)> &body) {
-    Kokkos::parallel_for(
-        label,
-        Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace, Kokkos::Schedule<Kokkos::Dynamic>>(0, n)
-            .set_chunk_size(1),
-        [&](const int k) { body(k); });
   };
 }
 
