@@ -5,8 +5,9 @@
 // each other's data in every pair loop. At a reneighboring at least `every` steps after the last
 // sort, LAMMPS sorts again (its own sort and bins); a user period of `every` steps or fewer is
 // kept, and atom_modify sort 0 sorts never. A fix asks from its pre_exchange(); a pair style,
-// which has no hook there, keeps LAMMPS's next sort due from its compute(). Only for kernels on
-// the host's threads (splits_by_index()).
+// which has no hook there, keeps LAMMPS's next sort due from its compute(), only where its kernel
+// runs on the host's threads (splits_by_index()); fix etd/kk scheme implicit, whose search and
+// pair loop run there on any backend, asks on every backend.
 #ifndef ETD_ATOM_SORT_SCHEDULE_H
 #define ETD_ATOM_SORT_SCHEDULE_H
 
