@@ -79,7 +79,18 @@ sizes=32000,256000,2048000
 steps=500
 warmup=20
 timeout=20
-cases=gen-nve,dpd-nve,gen-nve-half,dpd-nve-half,etd-implicit,shardlow,etd-diagonal,gen-nve-sort20
+# the bench's cases, in the order they run: case | pair | integrator | dt | package kokkos
+# keywords (none: the device's defaults) | atom_modify sort period (none: LAMMPS's, 1000)
+case_table=(
+  "gen-nve|dpd/gen|nve|0.0007||" "dpd-nve|dpd|nve|0.0007||"
+  "gen-nve-half|dpd/gen|nve|0.0007|neigh half newton on|" "dpd-nve-half|dpd|nve|0.0007|neigh half newton on|"
+  "etd-implicit|dpd/gen|implicit|0.005||" "shardlow|dpd/fdt/energy|shardlow|0.004||"
+  "etd-diagonal|dpd/gen|etd|0.0005||" "gen-nve-sort20|dpd/gen|nve|0.0007||20"
+)
+# a case's row of case_table (nothing for an unknown case)
+case_row() { local row; for row in "${case_table[@]}"; do [ "${row%%|*}" != "$1" ] || echo "$row"; done; }
+cases=$(for row in "${case_table[@]}"; do printf '%s,' "${row%%|*}"; done)
+cases=${cases%,}
 results=
 until=
 while [ $# -gt 0 ]; do
@@ -107,8 +118,7 @@ for phase in ${phases//,/ }; do
   case "$phase" in build|pack|test|bench) ;; *) die "unknown phase $phase (--help)" ;; esac
 done
 for case_name in ${cases//,/ }; do
-  case "$case_name" in gen-nve|dpd-nve|gen-nve-half|dpd-nve-half|etd-implicit|shardlow|etd-diagonal|gen-nve-sort20) ;;
-    *) die "unknown case $case_name (--help)" ;; esac
+  [ -n "$(case_row "$case_name")" ] || die "unknown case $case_name (--help)"
 done
 export ETD_DPD_KOKKOS_BACKEND=${ETD_DPD_KOKKOS_BACKEND:-cuda}
 backend=$ETD_DPD_KOKKOS_BACKEND
@@ -317,20 +327,12 @@ if has bench; then
     device="OpenMP, $threads of $(nproc) cores"  # nproc before OMP_NUM_THREADS, which it follows
   fi
   export OMP_PROC_BIND=false OMP_NUM_THREADS=$threads
-  # case | pair | integrator | dt | package kokkos keywords (none: the device's defaults) |
-  # atom_modify sort period (none: LAMMPS's, 1000)
-  table=(
-    "gen-nve|dpd/gen|nve|0.0007||" "dpd-nve|dpd|nve|0.0007||"
-    "gen-nve-half|dpd/gen|nve|0.0007|neigh half newton on|" "dpd-nve-half|dpd|nve|0.0007|neigh half newton on|"
-    "etd-implicit|dpd/gen|implicit|0.005||" "shardlow|dpd/fdt/energy|shardlow|0.004||"
-    "etd-diagonal|dpd/gen|etd|0.0005||" "gen-nve-sort20|dpd/gen|nve|0.0007||20"
-  )
   out=$results/gpu.jsonl
   : >"$out"
   lammps_version=$(sed -n 's/.*lammps-kokkos[a-z-]*-\([^-]*\)-.*/\1/p' <<<"$prefix")
   for natoms in ${sizes//,/ }; do
     for case_name in ${cases//,/ }; do
-      row=$(printf '%s\n' "${table[@]}" | grep "^$case_name|")
+      row=$(case_row "$case_name")
       IFS='|' read -r _ pair integrator dt words sort <<<"$row"
       sort=${sort:-1000}
       package=(); [ -z "$words" ] || { read -r -a package <<<"-pk kokkos $words"; }
