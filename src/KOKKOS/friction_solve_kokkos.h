@@ -195,8 +195,9 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
           const int upper[6] = {0, 1, 2, 4, 5, 8};    // xx xy xz yy yz zz
           for (int k = 0; k < 6; k++) inverse(6 * a + k) = m[upper[k]];
           for (int k = 0; k < 3; k++) {
-            held(3 * a + k) = (m[4 * k] != 0.0) ? 0.0 : 1.0;
-            if (m[4 * k] == 0.0) held_here++;
+            const bool is_held = m[4 * k] == 0.0;
+            held(3 * a + k) = is_held ? 1.0 : 0.0;
+            held_here += is_held;
           }
         },
         nheld);
@@ -277,8 +278,8 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
   {
     // row k's three entries among xx xy xz yy yz zz
     constexpr int entry[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+    const int block = 6 * a;
     for (int k = 0; k < 3; k++) {
-      const int block = 6 * a;
       out(3 * a + k) = (!any_held || held(3 * a + k) == 0.0)
           ? inverse(block + entry[k][0]) * v[0] + inverse(block + entry[k][1]) * v[1] +
               inverse(block + entry[k][2]) * v[2]
