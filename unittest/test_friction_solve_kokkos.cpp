@@ -586,3 +586,82 @@ TEST(PairSumsKokkos, BlocksCoverEveryRunOnceWithTheirShareOfPairs)
       if (lengths[r] > 0) EXPECT_GE(owner[r], 0) << threads << " threads, run " << r;
   }
 }
+
+// each atom's 3 values of a sum over the pairs, taken from the threads' copies (on the host)
+template <class Shares>
+Kokkos::View<double *, Kokkos::HostSpace> taken(const Shares &shares, int nowned)
+{
+  Kokkos::View<double *, Device> got("got", 3 * nowned);
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<Kokkos::DefaultExecutionSpace>(0, nowned), KOKKOS_LAMBDA(const int a) {
+        double values[3];
+        shares.take(a, values);
+        for (int k = 0; k < 3; k++) got(3 * a + k) = values[k];
+      });
+  return Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), got);
+}
+
+// The threads' copies (friction_pair_sums_kokkos.h) sum G u pair by pair as one thread would,
+// the same values to rounding, and hold only the chunks of atoms each thread's block touches:
+// with partners near in index (sorted atoms), about one copy of the atoms in all, not one per
+// thread. Then pairs with partners anywhere, fewer owned atoms (a new layout): the sums again,
+// so the copies were left zero and the layout follows the runs.
+TEST(PairSumsKokkos, CopiesHoldTheChunksTheThreadsTouch)
+{
+  using PairSums = etd::PairSumsKokkos<Device>;
+  const int threads = Kokkos::DefaultExecutionSpace().concurrency();
+  std::mt19937_64 gen(29);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  PairSums sums;
+  for (const int band : {40, 0}) {    // 0: partners anywhere
+    const int nowned = band ? 2000 : 1500, npartners = nowned + 100;
+    std::uniform_int_distribution<int> offset(1, band ? band : npartners - 1);
+    std::vector<int> pair_i, pair_j;
+    for (int i = 0; i < nowned; i++)
+      for (int n = 0; n < 5; n++) {
+        pair_i.push_back(i);
+        pair_j.push_back(band ? std::min(i + offset(gen), npartners - 1)
+                              : (i + offset(gen)) % npartners);
+      }
+    const int npairs = int(pair_i.size());
+    PairSums::Indices partner("partner", npairs);
+    PairSums::Geometry geometry("geometry", npairs);
+    PairSums::Values u("u", 3 * npartners);
+    auto h_partner = Kokkos::create_mirror_view(partner);
+    auto h_geometry = Kokkos::create_mirror_view(geometry);
+    auto h_u = Kokkos::create_mirror_view(u);
+    std::vector<double> expect(3 * nowned, 0.0);
+    for (int k = 0; k < 3 * npartners; k++) h_u(k) = uniform(gen);
+    const double weight = 0.7;
+    for (int p = 0; p < npairs; p++) {
+      h_partner(p) = pair_j[p];
+      double e[3], norm = 0.0;
+      for (double &c : e) norm += (c = uniform(gen)) * c;
+      for (int k = 0; k < 3; k++) h_geometry(p, k) = float(e[k] / std::sqrt(norm));
+      h_geometry(p, 3) = float(1.0 + uniform(gen));
+      const int i = pair_i[p], j = pair_j[p];
+      double projected = 0.0;
+      for (int k = 0; k < 3; k++)
+        projected += double(h_geometry(p, k)) * (h_u(3 * i + k) - h_u(3 * j + k));
+      projected *= weight * double(h_geometry(p, 3));
+      for (int k = 0; k < 3; k++) {
+        expect[3 * i + k] += projected * double(h_geometry(p, k));
+        if (j < nowned) expect[3 * j + k] -= projected * double(h_geometry(p, k));
+      }
+    }
+    Kokkos::deep_copy(partner, h_partner);
+    Kokkos::deep_copy(geometry, h_geometry);
+    Kokkos::deep_copy(u, h_u);
+    sums.find_runs(partner, pair_i.data(), npairs);
+    for (int pass = 0; pass < 2; pass++) {    // the second: the copies were left zero
+      sums.add_friction(geometry, u, weight, nowned);
+      auto h_got = taken(sums.shares<3>(), nowned);
+      for (int d = 0; d < 3 * nowned; d++)
+        ASSERT_NEAR(h_got(d), expect[d], 1e-12 * (1.0 + std::abs(expect[d])))
+            << "band " << band << ", pass " << pass << ", value " << d;
+    }
+    const std::size_t chunks = (nowned + 63) / 64;
+    if (band)    // each thread's own chunks and one across each edge of its block
+      EXPECT_LE(sums.copies_size(), (chunks + 2 * threads) * 64 * 3) << threads << " threads";
+  }
+}

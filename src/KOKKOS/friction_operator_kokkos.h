@@ -45,7 +45,7 @@ template <class DeviceType> class FrictionOperatorKokkos {
     std::function<void(const double *, double *)> swap;
   };
   using PairSums = PairSumsKokkos<DeviceType>;
-  using Shares = typename PairSums::Shares;
+  template <int Width> using Shares = typename PairSums::template Shares<Width>;
   using Incidence = FrictionIncidenceKokkos<DeviceType>;
 
   // whether the kernels run where the host's memory is (then G is applied pair by pair)
@@ -185,21 +185,26 @@ template <class DeviceType> class FrictionOperatorKokkos {
     const Values offset = moving ? *image_offsets : Values();
     if (by_pairs_) {
       // per pair: G u, the impulse and (moving images) the images' friction, + on i, - on j
-      const int width = moving ? 9 : 6;
       if (moving)
         sums_.add(typename PairSums::StepShares{given, noise, offset, geometry, root, moving},
                   nowned_);
       else
         sums_.template add_friction<6>(geometry_, given, 1.0, nowned_, noise, root);
-      const Shares shares = sums_.shares(width, nowned_);
+      const auto shares6 = sums_.template shares<6>();
+      const auto shares9 = sums_.template shares<9>();
       Kokkos::parallel_for(
           "etd:pair_terms", Kokkos::RangePolicy<execution_space>(0, nowned_),
           KOKKOS_LAMBDA(const int a) {
+            double values[9];
+            if (moving)
+              shares9.take(a, values);
+            else
+              shares6.take(a, values);
             for (int k = 0; k < 3; k++) {
               const int d = 3 * a + k;
-              friction(d) = shares.take(width * a + k);
-              kick(d) = shares.take(width * a + 3 + k);
-              if (moving) image(d) = shares.take(9 * a + 6 + k);
+              friction(d) = values[k];
+              kick(d) = values[3 + k];
+              if (moving) image(d) = values[6 + k];
             }
           });
       return;
@@ -253,11 +258,16 @@ template <class DeviceType> class FrictionOperatorKokkos {
     const double mass_weight = mass_weight_, friction_weight = friction_weight_;
     if (by_pairs_) {
       sums_.add_friction(geometry_, u, friction_weight, nowned_);
-      const Shares shares = sums_.shares(3, nowned_);
+      const auto shares = sums_.template shares<3>();
       Kokkos::parallel_for(
-          "etd:apply", Kokkos::RangePolicy<execution_space>(0, 3 * nowned_),
-          KOKKOS_LAMBDA(const int d) {
-            out(d) = mass_weight * inertia(d) * given(d) + shares.take(d);
+          "etd:apply", Kokkos::RangePolicy<execution_space>(0, nowned_),
+          KOKKOS_LAMBDA(const int a) {
+            double gu[3];
+            shares.take(a, gu);
+            for (int k = 0; k < 3; k++) {
+              const int d = 3 * a + k;
+              out(d) = mass_weight * inertia(d) * given(d) + gu[k];
+            }
           });
       return;
     }

@@ -3,8 +3,11 @@
 // rows), each thread takes a block of runs with about equal numbers of pairs and adds their
 // shares into a copy of its own (i's summed over its run first, then j's where j is owned), and
 // the next per-atom pass sums the copies and clears them (Shares::take). Every sum has a fixed
-// order for a given thread count. For the Kokkos backends that run on the host (OpenMP, Serial;
-// friction_operator_kokkos.h applies G through an incidence list on a device). Pure Kokkos.
+// order for a given thread count. A thread's copy holds only the chunks of 64 atoms its block
+// touches (sorted atoms: its own share and the pairs across its edges), so memory and the
+// summing pass's reads grow with the atoms, not with atoms times threads. For the Kokkos
+// backends that run on the host (OpenMP, Serial; friction_operator_kokkos.h applies G through
+// an incidence list on a device). Pure Kokkos.
 #ifndef ETD_FRICTION_PAIR_SUMS_KOKKOS_H
 #define ETD_FRICTION_PAIR_SUMS_KOKKOS_H
 
@@ -23,20 +26,38 @@ template <class DeviceType> class PairSumsKokkos {
   using Indices = kk::Indices<DeviceType>;
   using Geometry = kk::Geometry<DeviceType>;
 
-  // Each thread's copy of a sum over the pairs, width values per atom (add());
-  // take() sums one entry over the copies and clears it for the next sum
-  struct Shares {
+  // Atoms in chunks of 64: a thread's copy holds a chunk's values at a slot of its own, width
+  // values per atom, only where its block touches the chunk (the layout: lay_out())
+  static constexpr int chunk_bits = 6, chunk_size = 1 << chunk_bits;
+
+  // Where each thread's copy keeps an atom's values: thread t's chunks are numbered from 0
+  // (slots(t nchunks + chunk), -1 where its block writes none of the chunk's atoms: its values
+  // there are zero) after the first(t) slots of the threads before it
+  struct Layout {
+    Indices slots, first;
+    int threads = 0, nchunks = 0;
+  };
+
+  // Each thread's copy of a sum over the pairs, Width values per atom (add());
+  // take() sums atom a's Width values over the copies into out and clears them for the next sum
+  template <int Width> struct Shares {
     Values copies;
-    int threads = 0;
-    std::size_t stride = 0;
-    KOKKOS_INLINE_FUNCTION double take(std::size_t at) const
+    Layout layout;
+    KOKKOS_INLINE_FUNCTION void take(int a, double *out) const
     {
-      double sum = 0.0;
-      for (int t = 0; t < threads; t++) {
-        sum += copies(t * stride + at);
-        copies(t * stride + at) = 0.0;
+      for (int k = 0; k < Width; k++) out[k] = 0.0;
+      const int chunk = a >> chunk_bits, within = a & (chunk_size - 1);
+      double *values = copies.data();
+      for (int t = 0; t < layout.threads; t++) {
+        const int slot = layout.slots(t * layout.nchunks + chunk);
+        if (slot < 0) continue;    // (the copy's values are zero: the sums are the same to the bit)
+        double *at =
+            values + (static_cast<long>(layout.first(t) + slot) * chunk_size + within) * Width;
+        for (int k = 0; k < Width; k++) {
+          out[k] += at[k];
+          at[k] = 0.0;
+        }
       }
-      return sum;
     }
   };
 
@@ -49,6 +70,7 @@ template <class DeviceType> class PairSumsKokkos {
     run_atom_ = run_atom;
     run_start_ = run_start;
     nruns_ = nruns;
+    laid_out_for_ = -1;
   }
 
   // the runs of consecutive pairs with the same i, from the pairs' i in host memory
@@ -68,25 +90,41 @@ template <class DeviceType> class PairSumsKokkos {
       }
     run_start_(runs) = npairs;
     nruns_ = runs;
+    laid_out_for_ = -1;
   }
 
-  // the copies of the last sum, width values for each of nowned atoms
-  Shares shares(int width, int nowned) const
-  {
-    return {copies_, threads_, static_cast<std::size_t>(width) * nowned};
-  }
+  // the copies of the last sum, Width values for each atom
+  template <int Width> Shares<Width> shares() const { return {copies_, layout_}; }
+
+  // how many values the threads' copies hold (for the widest sum so far)
+  std::size_t copies_size() const { return copies_.extent(0); }
 
   // What a sum's kernel reads (blocks_of()): the runs and each thread's copy
   struct Blocks {
     Values copies;
+    Layout layout;
     Indices run_atom, run_start, partner;
     int nruns, threads;
-    std::size_t stride;
-    KOKKOS_INLINE_FUNCTION double *copy(int t) const { return copies.data() + t * stride; }
     // the first run of block t (t = threads: past the last)
     KOKKOS_INLINE_FUNCTION int first_run(int t) const
     {
       return PairSumsKokkos::first_run(run_start, nruns, t, threads);
+    }
+    // thread t's copy, for the atoms its block writes (held in locals: the kernel's stores
+    // could otherwise alias them, and they would be loaded again for every pair)
+    template <int Width> struct Copy {
+      double *values;
+      const int *slots;
+      long first;
+      KOKKOS_FORCEINLINE_FUNCTION double *at(int a) const
+      {
+        return values +
+            ((first + slots[a >> chunk_bits]) * chunk_size + (a & (chunk_size - 1))) * Width;
+      }
+    };
+    template <int Width> KOKKOS_INLINE_FUNCTION Copy<Width> copy(int t) const
+    {
+      return {copies.data(), layout.slots.data() + t * layout.nchunks, layout.first(t)};
     }
   };
 
@@ -166,7 +204,7 @@ template <class DeviceType> class PairSumsKokkos {
     Kokkos::parallel_for(
         Share::label, Kokkos::RangePolicy<execution_space>(0, blocks.threads),
         KOKKOS_LAMBDA(const int t) {
-          double *copy = blocks.copy(t);
+          const auto copy = blocks.template copy<Width>(t);
           const int last = blocks.first_run(t + 1);
           for (int r = blocks.first_run(t); r < last; r++) {
             const int i = blocks.run_atom(r);
@@ -177,15 +215,18 @@ template <class DeviceType> class PairSumsKokkos {
               double to_i[Width];
               share(p, i, j, to_i);
               for (int k = 0; k < Width; k++) sum[k] += to_i[k];
-              if (j < nowned)
+              if (j < nowned) {
+                double *to_j = copy.at(j);
                 for (int k = 0; k < Width; k++) {
                   if (JSign > 0)
-                    copy[Width * j + k] += to_i[k];
+                    to_j[k] += to_i[k];
                   else
-                    copy[Width * j + k] -= to_i[k];
+                    to_j[k] -= to_i[k];
                 }
+              }
             }
-            for (int k = 0; k < Width; k++) copy[Width * i + k] += sum[k];
+            double *at_i = copy.at(i);
+            for (int k = 0; k < Width; k++) at_i[k] += sum[k];
           }
         });
   }
@@ -202,7 +243,7 @@ template <class DeviceType> class PairSumsKokkos {
     Kokkos::parallel_for(
         "etd:friction_shares", Kokkos::RangePolicy<execution_space>(0, blocks.threads),
         KOKKOS_LAMBDA(const int t) {
-          double *copy = blocks.copy(t);
+          const auto copy = blocks.template copy<Width>(t);
           const double *given = u.data();
           // (locals: the stores into copy could alias the lambda's captured doubles, which
           // would then be loaded again for every pair)
@@ -223,10 +264,12 @@ template <class DeviceType> class PairSumsKokkos {
               sum0 += f0;
               sum1 += f1;
               sum2 += f2;
+              double *to_j = nullptr;
               if (j < owned) {
-                copy[Width * j] -= f0;
-                copy[Width * j + 1] -= f1;
-                copy[Width * j + 2] -= f2;
+                to_j = copy.at(j);
+                to_j[0] -= f0;
+                to_j[1] -= f1;
+                to_j[2] -= f2;
               }
               if (Width == 6) {    // (not if constexpr: CUDA lambdas may not first capture there)
                 const double amount = root * noise(p);
@@ -235,41 +278,90 @@ template <class DeviceType> class PairSumsKokkos {
                 kick1 += k1;
                 kick2 += k2;
                 if (j < owned) {
-                  copy[6 * j + 3] -= k0;
-                  copy[6 * j + 4] -= k1;
-                  copy[6 * j + 5] -= k2;
+                  to_j[3] -= k0;
+                  to_j[4] -= k1;
+                  to_j[5] -= k2;
                 }
               }
             }
-            copy[Width * i] += sum0;
-            copy[Width * i + 1] += sum1;
-            copy[Width * i + 2] += sum2;
+            double *at_i = copy.at(i);
+            at_i[0] += sum0;
+            at_i[1] += sum1;
+            at_i[2] += sum2;
             if (Width == 6) {
-              copy[6 * i + 3] += kick0;
-              copy[6 * i + 4] += kick1;
-              copy[6 * i + 5] += kick2;
+              at_i[3] += kick0;
+              at_i[4] += kick1;
+              at_i[5] += kick2;
             }
           }
         });
   }
 
+  // Each thread's slots: the chunks of the atoms its block writes (its runs' i and their owned
+  // j), numbered in chunk order (public: CUDA requires it of a function enclosing a kernel)
+  void lay_out(int nowned)
+  {
+    const int threads = execution_space().concurrency();
+    const int nchunks = (nowned + chunk_size - 1) >> chunk_bits;
+    kk::grow(layout_.slots, static_cast<std::size_t>(threads) * nchunks + 1);
+    kk::grow(layout_.first, threads);
+    layout_.threads = threads;
+    layout_.nchunks = nchunks;
+    const Layout layout = layout_;
+    const Indices run_atom = run_atom_, run_start = run_start_, partner = partner_;
+    const int nruns = nruns_;
+    Kokkos::parallel_for(
+        "etd:pair_sums_layout", Kokkos::RangePolicy<execution_space>(0, threads),
+        KOKKOS_LAMBDA(const int t) {
+          int *slots = layout.slots.data() + t * nchunks;
+          if (threads == 1) {    // (one copy: every chunk, no pass over the pairs)
+            for (int c = 0; c < nchunks; c++) slots[c] = c;
+            layout.first(t) = nchunks;
+            return;
+          }
+          for (int c = 0; c < nchunks; c++) slots[c] = -1;
+          const int last = first_run(run_start, nruns, t + 1, threads);
+          for (int r = first_run(run_start, nruns, t, threads); r < last; r++) {
+            slots[run_atom(r) >> chunk_bits] = 0;
+            for (int p = run_start(r); p < run_start(r + 1); p++)
+              if (partner(p) < nowned) slots[partner(p) >> chunk_bits] = 0;
+          }
+          int count = 0;
+          for (int c = 0; c < nchunks; c++)
+            if (slots[c] == 0) slots[c] = count++;
+          layout.first(t) = count;    // (its count, made the first slot below)
+        });
+    auto h_first = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), layout_.first);
+    int total = 0;
+    for (int t = 0; t < threads; t++) {
+      const int count = h_first(t);
+      h_first(t) = total;
+      total += count;
+    }
+    Kokkos::deep_copy(layout_.first, h_first);
+    slots_in_use_ = total;
+    laid_out_for_ = nowned;
+  }
+
  private:
   Indices partner_, run_atom_, run_start_;
   int nruns_ = 0;
-  Values copies_;    // each thread's copy of a sum over the pairs (Shares)
-  int threads_ = 1;
+  Values copies_;    // each thread's copy of a sum over the pairs (Shares), at its slots
+  Layout layout_;
+  int laid_out_for_ = -1;    // the nowned of layout_ (-1: the runs changed since)
+  int slots_in_use_ = 0;     // over all threads' copies
 
-  // The copies for width values per atom on each thread (zeroed where they grow, as take()
-  // leaves them), with the runs, for a sum's kernel: one block of runs per thread (about equal
-  // numbers of pairs), block t into copy t (the same sums whichever thread runs it; no per-run
-  // token)
+  // The copies (laid out for the runs and nowned owned atoms), with the runs, for a sum's
+  // kernel: one block of runs per thread (about equal numbers of pairs), block t into copy t
+  // (the same sums whichever thread runs it; no per-run token)
   Blocks blocks_of(int width, int nowned)
   {
-    threads_ = execution_space().concurrency();
-    const std::size_t stride = static_cast<std::size_t>(width) * nowned;
-    if (copies_.extent(0) < threads_ * stride)
-      copies_ = Values("etd:pair_shares", threads_ * stride);
-    return {copies_, run_atom_, run_start_, partner_, nruns_, threads_, stride};
+    if (laid_out_for_ != nowned || layout_.threads != execution_space().concurrency())
+      lay_out(nowned);
+    // (zeroed where they grow, as take() leaves them)
+    const std::size_t size = static_cast<std::size_t>(slots_in_use_) * chunk_size * width;
+    if (copies_.extent(0) < size) copies_ = Values("etd:pair_shares", size);
+    return {copies_, layout_, run_atom_, run_start_, partner_, nruns_, layout_.threads};
   }
 };
 

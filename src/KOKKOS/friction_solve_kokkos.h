@@ -27,7 +27,6 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
   // sums count values (at most 9) over the ranks, in place
   using GlobalSum = std::function<void(double *, int)>;
   using typename Operator::PairSums;
-  using typename Operator::Shares;
   using typename Operator::Incidence;
   using Operator::apply;
 
@@ -169,14 +168,14 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
     const bool by_pairs = by_pairs_;
     if (by_pairs)    // gamma w_D e e^T, the same on both ends
       sums_.add(typename PairSums::BlockShares{geometry}, nowned_);
-    const Shares shares = sums_.shares(6, nowned_);
+    const auto shares = sums_.template shares<6>();
     int nheld = 0;
     Kokkos::parallel_reduce(
         "etd:precondition_setup", Kokkos::RangePolicy<execution_space>(0, nowned_),
         KOKKOS_LAMBDA(const int a, int &held_here) {
           double block[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
           if (by_pairs) {
-            for (int k = 0; k < 6; k++) block[k] = shares.take(6 * a + k);
+            shares.take(a, block);
           } else {
             for (int e = offsets(a); e < offsets(a + 1); e++) {
               const int p = incidence(e);
@@ -359,7 +358,7 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
     bool any_held;    // else held is all zero and not read
     bool applied;    // w already holds A z (projected)
     bool by_pairs;   // else A z from the pairs' shares (by pairs) or the incidence list
-    Shares shares;
+    typename Operator::template Shares<3> shares;
     KOKKOS_INLINE_FUNCTION void init(double *sums) const
     {
       for (int k = 0; k < cg_detail::NSUMS; k++) sums[k] = 0.0;
@@ -374,9 +373,10 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
       double az[3];
       if (applied)
         for (int k = 0; k < 3; k++) az[k] = w(3 * a + k);
-      else if (by_pairs)
-        for (int k = 0; k < 3; k++)
-          az[k] = mass_weight * inertia(3 * a + k) * z(3 * a + k) + shares.take(3 * a + k);
+      else if (by_pairs) {
+        shares.take(a, az);
+        for (int k = 0; k < 3; k++) az[k] += mass_weight * inertia(3 * a + k) * z(3 * a + k);
+      }
       else
         Incidence::apply_atom(a, z, inertia, offsets, incidence, other, geometry, mass_weight,
                    friction_weight, az);
@@ -410,7 +410,7 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
     ApplyAndSum functor{cg_detail::NSUMS, z_, w_, r_, s_, b_, inertia_, held_,
                         incidence_.offsets(), incidence_.incidence(), incidence_.other(),
                         geometry_, mass_weight_, friction_weight_, with_b, any_held_, deflate_,
-                        by_pairs_, sums_.shares(3, nowned_)};
+                        by_pairs_, sums_.template shares<3>()};
     Kokkos::View<double *, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> result(
         sums, cg_detail::NSUMS);
     Kokkos::parallel_reduce("etd:apply_and_sum", Kokkos::RangePolicy<execution_space>(0, nowned_),
