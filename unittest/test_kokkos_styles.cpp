@@ -33,10 +33,13 @@ namespace {
 
 const std::string DATA = etdtest::work_file("kokkos_styles.data");
 
+// how many GPUs the tests run on (ETD_KOKKOS_GPUS, a CUDA Kokkos: -k on g N), or null
+const char *kokkos_gpus() { return std::getenv("ETD_KOKKOS_GPUS"); }
+
 std::vector<std::string> kokkos_args()
 {
   const char *threads = std::getenv("ETD_KOKKOS_THREADS");
-  const char *gpus = std::getenv("ETD_KOKKOS_GPUS");    // a CUDA Kokkos: -k on g N
+  const char *gpus = kokkos_gpus();
   std::vector<std::string> args = {"-k", "on", "t", threads ? threads : "1", "-sf", "kk"};
   if (!gpus) return args;
   // a GPU defaults to full lists and newton off; the tests compare with the CPU styles' default,
@@ -500,7 +503,7 @@ TEST(KokkosStyles, KernelsKeepTheAtomsSorted)
     int steps;
     double bound;
   };
-  const bool gpu = std::getenv("ETD_KOKKOS_GPUS") != nullptr;
+  const bool gpu = kokkos_gpus() != nullptr;
   struct Case {
     bool kokkos;
     const char *sort;
