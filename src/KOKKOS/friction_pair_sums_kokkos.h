@@ -37,6 +37,11 @@ template <class DeviceType> class PairSumsKokkos {
     Indices slots, first;
     int threads = 0, nchunks = 0;
   };
+  // the first of atom a's Width values in the copies, its chunk at the given slot
+  template <int Width> KOKKOS_FORCEINLINE_FUNCTION static long position(long slot, int a)
+  {
+    return (slot * chunk_size + (a & (chunk_size - 1))) * Width;
+  }
 
   // Each thread's copy of a sum over the pairs, Width values per atom (add());
   // take() sums atom a's Width values over the copies into out and clears them for the next sum
@@ -46,13 +51,12 @@ template <class DeviceType> class PairSumsKokkos {
     KOKKOS_INLINE_FUNCTION void take(int a, double *out) const
     {
       for (int k = 0; k < Width; k++) out[k] = 0.0;
-      const int chunk = a >> chunk_bits, within = a & (chunk_size - 1);
+      const int chunk = a >> chunk_bits;
       double *values = copies.data();
       for (int t = 0; t < layout.threads; t++) {
         const int slot = layout.slots(t * layout.nchunks + chunk);
         if (slot < 0) continue;    // (the copy's values are zero: the sums are the same to the bit)
-        double *at =
-            values + (static_cast<long>(layout.first(t) + slot) * chunk_size + within) * Width;
+        double *at = values + position<Width>(static_cast<long>(layout.first(t)) + slot, a);
         for (int k = 0; k < Width; k++) {
           out[k] += at[k];
           at[k] = 0.0;
@@ -118,8 +122,7 @@ template <class DeviceType> class PairSumsKokkos {
       long first;
       KOKKOS_FORCEINLINE_FUNCTION double *at(int a) const
       {
-        return values +
-            ((first + slots[a >> chunk_bits]) * chunk_size + (a & (chunk_size - 1))) * Width;
+        return values + position<Width>(first + slots[a >> chunk_bits], a);
       }
     };
     template <int Width> KOKKOS_INLINE_FUNCTION Copy<Width> copy(int t) const
