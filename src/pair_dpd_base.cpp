@@ -8,6 +8,7 @@
 #include "force.h"
 #include "lammps_compat.h"
 #include "memory.h"
+#include "neighbor.h"
 #include "update.h"
 #include "utils.h"
 
@@ -124,6 +125,13 @@ void PairDPDBase::init_style()
     error->all(FLERR, "Pair style {} requires atom IDs (its noise is keyed on them)", style_name);
   if (update->dt <= 0.0)
     error->all(FLERR, "Pair style {} requires a positive timestep", style_name);
+  // LAMMPS's KOKKOS neighbor build refuses 'multi' for its own lists and crashes binning a host
+  // style's list with it (NBinMulti::bin_atoms, seen with 4Feb2025 and stock dpd/fdt)
+  if (lmp->kokkos && neighbor->style == Neighbor::MULTI)
+    error->all(FLERR,
+               "Pair style {} with the KOKKOS package (-k on) cannot use 'neighbor ... multi', "
+               "which LAMMPS's KOKKOS neighbor build does not support: use 'neighbor SKIN bin'",
+               style_name);
   neigh_request = etd::compat::request_half_list(neighbor, this, instance_me);
   // requests from the package's fixes and computes are renewed by their own init(), which
   // LAMMPS calls after this one: a run without fix etd gets the full DPD force back

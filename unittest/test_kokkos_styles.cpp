@@ -650,6 +650,23 @@ TEST(KokkosStyles, BadInputStopsWithAnError)
          "neigh_modify every 1 delay 10 check yes", "fix integrate all etd", "run 2 post no"},
         "lets atoms outrun the neighbor skin"}},
       setup, kokkos_args());
+  // neighbor multi: LAMMPS's KOKKOS build stops for a /kk style's list and crashed binning a
+  // host style's (dpd/fpm has no /kk variant); both pair styles stop with the same ERROR
+  const std::string multi = "cannot use 'neighbor ... multi'";
+  etdtest::expect_errors({{{"pair_style dpd/gen 1.0 1.0 123", "pair_coeff * * 25.0 4.5 2.0",
+                            "neighbor 0.3 multi", "run 0 post no"},
+                           multi}},
+                         setup, kokkos_args());
+  const auto spheres = [](Lammps &l) {
+    l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
+            "region box block 0 5 0 5 0 5", "create_box 1 box",
+            "create_atoms 1 random 375 4711 NULL", "set group all mass 1.0", "timestep 0.01"});
+  };
+  etdtest::expect_errors({{{"pair_style dpd/fpm 1.0 1.0 8642", "pair_coeff 1 1 25 4.5 4.5 0.5",
+                            "neighbor 0.3 multi", "fix integrate all nve/sphere",
+                            "run 0 post no"},
+                           multi}},
+                         spheres, kokkos_args());
 }
 
 // LAMMPS finalises Kokkos once, after the last instance and before MPI
