@@ -10,6 +10,7 @@ the KOKKOS run must have used it. Where the KOKKOS package cannot
 run an input, the KOKKOS run must stop with an ERROR that names why.
 
 usage: check_examples_kokkos.py LMP PLUGIN REPOSITORY [THREADS [STEPS [CASE ...]]]
+ETD_EXAMPLES_LAUNCHER (environment): words put before LMP in both runs, e.g. "mpirun -np 2".
 Exit status 0 when every case passes; on a failure the cases' logs stay in the scratch folder named.
 """
 import math
@@ -89,7 +90,8 @@ def last_thermo(log):
 
 def run(lmp, folder, name, args):
     log = os.path.join(folder, f"log.{name}")
-    result = subprocess.run([lmp, *args, "-log", log, "-screen", "none"], cwd=folder,
+    launcher = os.environ.get("ETD_EXAMPLES_LAUNCHER", "").split()
+    result = subprocess.run([*launcher, lmp, *args, "-log", log, "-screen", "none"], cwd=folder,
                             capture_output=True, text=True, timeout=600)
     text = open(log).read() if os.path.exists(log) else ""
     return result.returncode, text + result.stdout + result.stderr
