@@ -420,6 +420,30 @@ TEST(KokkosStyles, DiagonalSchemeMatchesTheCpuFixInTemperatureAndPressure)
 
 // write_restart after 25 steps and a new instance from the file: the same state after 50 steps
 // as one run straight through (the noise is keyed on IDs and the timestep, not on a stream)
+// LAMMPS's memory line (and `info memory`) counts what fix etd/kk scheme implicit holds in its
+// kernels' views (the step's pairs, the solve's vectors), as it counts the CPU fix's arrays
+TEST(KokkosStyles, ImplicitFixCountsTheKernelsMemory)
+{
+  double bytes[2] = {0.0, 0.0};
+  for (bool kokkos : {false, true}) {
+    Lammps l(MPI_COMM_WORLD, true, kokkos ? kokkos_args() : std::vector<std::string>{});
+    setup_box(l, 0.01, 0.005);
+    l.cmds(GEN_S2);
+    // (no pressure at the last step: the kernels' pairs are then not copied to the host, where
+    // the CPU fix's own arrays would count them)
+    l.cmds({"thermo_style custom step temp", "fix integrate all etd scheme implicit",
+            "run 5 post no"});
+    if (kokkos) ASSERT_GT(kernel_solves(l), 0.0);
+    bytes[kokkos] = l.lmp->modify->get_fix_by_id("integrate")->memory_usage();
+  }
+  // both hold LAMMPS's per-atom arrays of the fix; the CPU fix its pairs (FrictionPair) and
+  // vectors, the kernels the same pairs twice (packed, and staged at their candidates' slots)
+  // and their vectors; without the views the kk fix counted less than the CPU fix
+  std::printf("fix etd scheme implicit: %.0f bytes, fix etd/kk: %.0f bytes\n", bytes[0], bytes[1]);
+  EXPECT_GT(bytes[1], bytes[0]);
+  EXPECT_LT(bytes[1], 4.0 * bytes[0]);
+}
+
 TEST(KokkosStyles, RestartContinuesTheRun)
 {
   struct Case {

@@ -74,6 +74,14 @@ template <class DeviceType> void FixETDImplicitKokkos<DeviceType>::pre_exchange(
   if (assembles_in_kernels()) sorting.before_exchange(atom, update->ntimestep);
 }
 
+template <class DeviceType> double FixETDImplicitKokkos<DeviceType>::memory_usage()
+{
+  const std::size_t vectors = sizeof(int) * mobile.capacity() +
+      sizeof(double) * (zero_u.capacity() + unused.capacity() + image_friction.capacity());
+  return FixETDImplicit::memory_usage() + static_cast<double>(pairs_kk.memory_usage()) +
+      static_cast<double>(kernels.memory_usage()) + static_cast<double>(vectors);
+}
+
 // the kernels assemble dpd/gen-type pairs (translation), for the inertial step and the overdamped
 template <class DeviceType> bool FixETDImplicitKokkos<DeviceType>::assembles_in_kernels() const
 {

@@ -33,6 +33,9 @@ template <class DeviceType> class FixETDImplicitKokkos : public FixETDImplicit {
   void init() override;
   void setup(int vflag) override;
   void pre_exchange() override;
+  // the CPU fix's arrays and the kernels' views (LAMMPS asks at a run's setup: the views then
+  // hold the previous run's sizes, none before the first run, as the CPU fix's pairs do)
+  double memory_usage() override;
 
  protected:
   bool assemble_pairs(const etd::FrictionPairAssembly::Context &context) override;

@@ -158,6 +158,11 @@ template <class DeviceType> class FrictionIncidenceKokkos {
   const Indices &incidence() const { return incidence_; }
   const Indices &other() const { return other_; }
   const Indices &end() const { return end_; }
+  std::size_t memory_usage() const
+  {
+    return kk::bytes_of(offsets_, incidence_, other_, end_, cursor_) +
+        sizeof(int) * fill_.capacity();
+  }
 
  private:
   Indices offsets_, incidence_, other_, end_, cursor_;

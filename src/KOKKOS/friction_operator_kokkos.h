@@ -53,6 +53,17 @@ template <class DeviceType> class FrictionOperatorKokkos {
       Kokkos::SpaceAccessibility<Kokkos::DefaultHostExecutionSpace,
                                  typename DeviceType::memory_space>::accessible;
 
+  // the bytes its views and host buffers hold (the pairs handed to it by the host, G's sums or
+  // incidence list, the vectors of the right-hand sides and of the solve)
+  std::size_t memory_usage() const
+  {
+    return sums_.memory_usage() + incidence_.memory_usage() +
+        kk::bytes_of(partner_, geometry_, sent_, sent_values_, inertia_, b_, x_, w_, kick_,
+                     image_) +
+        sizeof(int) * (pair_i_.capacity() + pair_j_.capacity()) +
+        sizeof(double) * (sent_host_.capacity() + slots_host_.capacity());
+  }
+
   // The step's pairs (i owned, j a partner index; as FrictionPairAssembly holds them, the pairs
   // of one atom i together) over nowned owned atoms and npartners partners; their runs, or the
   // incidence list, are found here, on the host.

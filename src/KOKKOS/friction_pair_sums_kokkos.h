@@ -102,6 +102,8 @@ template <class DeviceType> class PairSumsKokkos {
 
   // how many values the threads' copies hold (for the widest sum so far)
   std::size_t copies_size() const { return copies_.extent(0); }
+  // the bytes of the copies and their layout (the runs are mostly the pairs' own views)
+  std::size_t memory_usage() const { return kk::bytes_of(copies_, layout_.slots, layout_.first); }
 
   // What a sum's kernel reads (blocks_of()): the runs and each thread's copy
   struct Blocks {

@@ -254,6 +254,15 @@ template <class DeviceType> class FrictionPairsKokkos {
   // whether DeviceType's kernels read host memory: then they read LAMMPS's list in place
   static constexpr bool reads_host =
       Kokkos::SpaceAccessibility<execution_space, Kokkos::HostSpace>::accessible;
+  // the bytes its views hold (the step's pairs, their staging, the inputs' copies)
+  std::size_t memory_usage() const
+  {
+    return packed_.memory_usage() + staged_.memory_usage() +
+        kk::bytes_of(ziggurat_, coefficients_, present_, ilist_, list_start_, list_,
+                     list_start_host_, x_, type_, mask_, ghost_partner_, tag_, image_,
+                     pair_start_, pair_i_, staged_tag_j_);
+  }
+
   // (a test takes a GPU's path on the host: the list copied into compressed rows)
   void copy_the_list(bool copy) { list_in_place_ = reads_host && !copy; }
 
@@ -343,6 +352,10 @@ template <class DeviceType> class FrictionPairsKokkos {
       kk::grow(noise, n);
       kk::grow(distance, n);
       if (moving) kk::grow(offset, 3 * n);
+    }
+    std::size_t memory_usage() const
+    {
+      return kk::bytes_of(partner, geometry, noise, distance, offset);
     }
     // pair `to` of these arrays from pair `at` of `from`
     KOKKOS_INLINE_FUNCTION void copy(int to, const PairArrays &from, int at, bool moving) const

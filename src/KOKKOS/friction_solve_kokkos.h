@@ -86,6 +86,11 @@ template <class DeviceType> class FrictionSolveKokkos : public FrictionOperatorK
     return result;
   }
 
+  std::size_t memory_usage() const
+  {
+    return Operator::memory_usage() + kk::bytes_of(mobile_, inverse_, held_, r_, z_, p_, s_);
+  }
+
   // Deflation: per component, how many unknowns are solved (not held) over all ranks (a
   // reduction only where the solve deflates)
   void count_active(bool deflate)

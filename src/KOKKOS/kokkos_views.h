@@ -42,6 +42,12 @@ inline std::function<void(int, const std::function<void(int)> &)> host_chunk_run
   };
 }
 
+// the bytes the views hold (their allocations, which work views keep from step to step)
+template <class... Views> std::size_t bytes_of(const Views &...views)
+{
+  return (std::size_t{0} + ... + (views.span() * sizeof(typename Views::value_type)));
+}
+
 // the first n entries of view from a host array (grown to hold them)
 template <class View, typename T> void upload(View &view, const T *host, int n)
 {
