@@ -109,7 +109,10 @@ def run(lmp, folder, name, args):
     launcher = os.environ.get("ETD_EXAMPLES_LAUNCHER", "").split()
     result = subprocess.run([*launcher, lmp, *args, "-log", log, "-screen", "none"], cwd=folder,
                             capture_output=True, text=True, timeout=600)
-    text = open(log).read() if os.path.exists(log) else ""
+    text = ""
+    if os.path.exists(log):
+        with open(log) as handle:
+            text = handle.read()
     return result.returncode, text + result.stdout + result.stderr
 
 

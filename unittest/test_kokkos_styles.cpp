@@ -60,6 +60,12 @@ void setup_box(Lammps &l, double mass = 1.0, double dt = 0.01)
           "thermo_modify norm no", "compute virial all pressure NULL virial"});
 }
 
+// 375 atoms of atom_style sphere (dpd/fpm's) at random in a 5^3 box, mass 1
+const std::vector<std::string> SPHERE_BOX = {
+    "units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
+    "region box block 0 5 0 5 0 5", "create_box 1 box", "create_atoms 1 random 375 4711 NULL",
+    "set group all mass 1.0"};
+
 const std::vector<std::string> GEN_S2 = {"pair_style dpd/gen 1.0 1.0 123",
                                          "pair_coeff * * 25.0 4.5 2.0"};
 // s = 1/2, a separate dissipative cutoff and conservative exponent, a different cross pair
@@ -418,8 +424,6 @@ TEST(KokkosStyles, DiagonalSchemeMatchesTheCpuFixInTemperatureAndPressure)
   EXPECT_NEAR(temp[1], 1.0, 0.05);
 }
 
-// write_restart after 25 steps and a new instance from the file: the same state after 50 steps
-// as one run straight through (the noise is keyed on IDs and the timestep, not on a stream)
 // LAMMPS's memory line (and `info memory`) counts what fix etd/kk scheme implicit holds in its
 // kernels' views (the step's pairs, the solve's vectors), as it counts the CPU fix's arrays
 TEST(KokkosStyles, ImplicitFixCountsTheKernelsMemory)
@@ -444,6 +448,8 @@ TEST(KokkosStyles, ImplicitFixCountsTheKernelsMemory)
   EXPECT_LT(bytes[1], 4.0 * bytes[0]);
 }
 
+// write_restart after 25 steps and a new instance from the file: the same state after 50 steps
+// as one run straight through (the noise is keyed on IDs and the timestep, not on a stream)
 TEST(KokkosStyles, RestartContinuesTheRun)
 {
   struct Case {
@@ -622,11 +628,9 @@ TEST(KokkosStyles, ImplicitSolveOnTheHostIsNamed)
     std::string fix;
     bool warns;
   };
-  const std::vector<std::string> spheres = {
-      "units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
-      "region box block 0 5 0 5 0 5", "create_box 1 box", "create_atoms 1 random 375 4711 NULL",
-      "set group all mass 1.0", "pair_style dpd/fpm 1.0 1.0 8642", "pair_coeff 1 1 25 4.5 4.5 0.5",
-      "timestep 0.003"};
+  std::vector<std::string> spheres = SPHERE_BOX;
+  spheres.insert(spheres.end(), {"pair_style dpd/fpm 1.0 1.0 8642", "pair_coeff 1 1 25 4.5 4.5 0.5",
+                                 "timestep 0.003"});
   for (const Case &c : {Case{"dpd/gen", {}, "", false},
                         Case{"dpd/gen overdamped", {}, " overdamped yes", false},
                         Case{"dpd/fpm", spheres, "", true}}) {
@@ -682,9 +686,8 @@ TEST(KokkosStyles, BadInputStopsWithAnError)
                            multi}},
                          setup, kokkos_args());
   const auto spheres = [](Lammps &l) {
-    l.cmds({"units lj", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
-            "region box block 0 5 0 5 0 5", "create_box 1 box",
-            "create_atoms 1 random 375 4711 NULL", "set group all mass 1.0", "timestep 0.01"});
+    l.cmds(SPHERE_BOX);
+    l.cmd("timestep 0.01");
   };
   etdtest::expect_errors({{{"pair_style dpd/fpm 1.0 1.0 8642", "pair_coeff 1 1 25 4.5 4.5 0.5",
                             "neighbor 0.3 multi", "fix integrate all nve/sphere",

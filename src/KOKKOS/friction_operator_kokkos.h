@@ -54,12 +54,13 @@ template <class DeviceType> class FrictionOperatorKokkos {
                                  typename DeviceType::memory_space>::accessible;
 
   // the bytes its views and host buffers hold (the pairs handed to it by the host, G's sums or
-  // incidence list, the vectors of the right-hand sides and of the solve)
+  // incidence list, the vectors of the right-hand sides and of the solve); the geometry kept
+  // from pairs already in DeviceType's memory is counted by their owner
   std::size_t memory_usage() const
   {
-    return sums_.memory_usage() + incidence_.memory_usage() +
-        kk::bytes_of(partner_, geometry_, sent_, sent_values_, inertia_, b_, x_, w_, kick_,
-                     image_) +
+    const std::size_t own_geometry = geometry_.use_count() > 1 ? 0 : kk::bytes_of(geometry_);
+    return sums_.memory_usage() + incidence_.memory_usage() + own_geometry +
+        kk::bytes_of(partner_, sent_, sent_values_, inertia_, b_, x_, w_, kick_, image_) +
         sizeof(int) * (pair_i_.capacity() + pair_j_.capacity()) +
         sizeof(double) * (sent_host_.capacity() + slots_host_.capacity());
   }
