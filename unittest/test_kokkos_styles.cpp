@@ -448,6 +448,30 @@ TEST(KokkosStyles, ImplicitFixCountsTheKernelsMemory)
   EXPECT_LT(bytes[1], 4.0 * bytes[0]);
 }
 
+// LAMMPS's memory line counts the copies of the forces that dpd/gen/kk keeps for its threads,
+// one per thread where they share a half list (on one thread, or a GPU, there are none)
+TEST(KokkosStyles, PairCountsTheThreadsCopies)
+{
+  double bytes[2] = {0.0, 0.0};
+  double copies = 0.0;
+  for (bool kokkos : {false, true}) {
+    Lammps l(MPI_COMM_WORLD, true, kokkos ? kokkos_args() : std::vector<std::string>{});
+    setup_box(l);
+    l.cmds(GEN_S2);
+    l.cmds({"fix integrate all nve", "run 5 post no"});
+    bytes[kokkos] = l.lmp->force->pair->memory_usage();
+    if (kokkos) {
+      ASSERT_TRUE(pair_ran_kernel(l));
+      const char *threads = std::getenv("ETD_KOKKOS_THREADS");
+      const int nthreads = threads ? std::atoi(threads) : 1;
+      if (!kokkos_gpus() && nthreads > 1)
+        copies = nthreads * 3.0 * sizeof(double) * l.lmp->atom->nmax;
+    }
+  }
+  std::printf("pair dpd/gen: %.0f bytes, dpd/gen/kk: %.0f bytes\n", bytes[0], bytes[1]);
+  EXPECT_DOUBLE_EQ(bytes[1] - bytes[0], copies);
+}
+
 // write_restart after 25 steps and a new instance from the file: the same state after 50 steps
 // as one run straight through (the noise is keyed on IDs and the timestep, not on a stream)
 TEST(KokkosStyles, RestartContinuesTheRun)

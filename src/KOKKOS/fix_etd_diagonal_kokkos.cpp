@@ -10,6 +10,7 @@
 #include "fix_etd_implicit_kokkos.h"
 #include "fix_etd_options.h"
 #include "force.h"
+#include "kokkos_views.h"
 #include "lammpsplugin.h"
 #include "pair.h"
 #include "update.h"
@@ -104,6 +105,12 @@ FixETDDiagonalKokkos<DeviceType>::friction_on_device(int nlocal)
                           &friction[0][0], nlocal, 3));
     return d_friction_copy;
   }
+}
+
+// the CPU fix's arrays and, in a device's memory, the friction diagonal's copy
+template <class DeviceType> double FixETDDiagonalKokkos<DeviceType>::memory_usage()
+{
+  return FixETDDiagonal::memory_usage() + etd::kk::bytes_of(d_friction_copy);
 }
 
 // v += dt phi1(z) F/m per component, z = -Gamma dt / m (etd_coefficients.h)

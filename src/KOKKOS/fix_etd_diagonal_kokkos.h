@@ -25,6 +25,7 @@ template <class DeviceType> class FixETDDiagonalKokkos : public FixETDDiagonal {
   void init() override;
   void initial_integrate(int) override;
   void final_integrate() override;
+  double memory_usage() override;
 
  private:
   bool on_device =

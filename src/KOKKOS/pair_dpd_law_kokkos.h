@@ -58,6 +58,7 @@ template <class DeviceType, class Style> class PairDPDLawKokkos : public PairDPD
   void init_style() override;
   double init_one(int i, int j) override;
   void compute(int eflag, int vflag) override;
+  double memory_usage() override;
 
   // what the implicit scheme asks of the style: served by the host loop
   void request_conservative_only() override;

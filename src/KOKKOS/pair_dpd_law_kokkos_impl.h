@@ -309,6 +309,21 @@ void PairDPDLawKokkos<DeviceType, Style>::extras_to_host(bool extras)
   }
 }
 
+// LAMMPS's memory line: the CPU style's arrays and what the kernel keeps beside them, the
+// threads' copies of the forces and extras (one per unique token of the space: its concurrency
+// on the host backends) and, in a device's memory, the extras
+template <class DeviceType, class Style> double PairDPDLawKokkos<DeviceType, Style>::memory_usage()
+{
+  const auto copies = [](const auto &duplicated) {
+    if (!duplicated.is_allocated()) return 0.0;
+    return static_cast<double>(etd::kk::bytes_of(duplicated.subview())) *
+        typename DeviceType::execution_space().concurrency();
+  };
+  double bytes = Base::memory_usage() + copies(dup_f) + copies(dup_friction) + copies(dup_split);
+  if constexpr (!reads_host_memory) bytes += etd::kk::bytes_of(d_friction, d_split);
+  return bytes;
+}
+
 template <class DeviceType, class Style>
 template <int NEIGHFLAG>
 void PairDPDLawKokkos<DeviceType, Style>::launch(int inum, EV_FLOAT &ev)
