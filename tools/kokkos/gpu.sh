@@ -282,10 +282,12 @@ if has pack; then
   [ "$backend" = cuda ] || die "the pack phase is for the cuda backend"
   [ -f "$build/etddpdplugin.so" ] || die "no plugin at $build/etddpdplugin.so: the build phase first"
   printf 'prebuilt_prefix=%s\nprebuilt_root=%s\nnvcc=%s\n' "$prefix" "$root" "${cuda_version:-}" >"$build/.prebuilt"
-  # the LAMMPS prefix without its build folders, and the package's build without object files;
-  # absolute names, unpacked at /
+  # the LAMMPS prefix without its build folders and the potential and benchmark files LAMMPS
+  # installs (90 MB that no case reads), and the package's build without object files; absolute
+  # names, unpacked at /
   tar -C / -cJf "$sources/prebuilt.tar.xz" \
     --exclude="${prefix#/}/build" --exclude="${prefix#/}/build-kokkos" --exclude="${prefix#/}/kokkos-source" \
+    --exclude="${prefix#/}/share/lammps/potentials" --exclude="${prefix#/}/share/lammps/bench" \
     --exclude='CMakeFiles' --exclude='*.o' --exclude='*.log' \
     "${prefix#/}" "${build#/}"
   printf '%s\n' "$root" >"$sources/prebuilt.root"
