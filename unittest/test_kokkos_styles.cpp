@@ -36,11 +36,17 @@ const std::string DATA = etdtest::work_file("kokkos_styles.data");
 // how many GPUs the tests run on (ETD_KOKKOS_GPUS, a CUDA Kokkos: -k on g N), or null
 const char *kokkos_gpus() { return std::getenv("ETD_KOKKOS_GPUS"); }
 
-std::vector<std::string> kokkos_args()
+// the host threads per rank (ETD_KOKKOS_THREADS, default 1)
+int kokkos_threads()
 {
   const char *threads = std::getenv("ETD_KOKKOS_THREADS");
+  return threads ? std::atoi(threads) : 1;
+}
+
+std::vector<std::string> kokkos_args()
+{
   const char *gpus = kokkos_gpus();
-  std::vector<std::string> args = {"-k", "on", "t", threads ? threads : "1", "-sf", "kk"};
+  std::vector<std::string> args = {"-k", "on", "t", std::to_string(kokkos_threads()), "-sf", "kk"};
   if (!gpus) return args;
   // a GPU defaults to full lists and newton off; the tests compare with the CPU styles' default,
   // newton on (NewtonOffAndFullListSettingsFollowTheCpuStyle takes the GPU's defaults)
@@ -462,10 +468,8 @@ TEST(KokkosStyles, PairCountsTheThreadsCopies)
     bytes[kokkos] = l.lmp->force->pair->memory_usage();
     if (kokkos) {
       ASSERT_TRUE(pair_ran_kernel(l));
-      const char *threads = std::getenv("ETD_KOKKOS_THREADS");
-      const int nthreads = threads ? std::atoi(threads) : 1;
-      if (!kokkos_gpus() && nthreads > 1)
-        copies = nthreads * 3.0 * sizeof(double) * l.lmp->atom->nmax;
+      if (!kokkos_gpus() && kokkos_threads() > 1)
+        copies = kokkos_threads() * 3.0 * sizeof(double) * l.lmp->atom->nmax;
     }
   }
   std::printf("pair dpd/gen: %.0f bytes, dpd/gen/kk: %.0f bytes\n", bytes[0], bytes[1]);
